@@ -1,0 +1,55 @@
+// contactfx: an effects configuration is plain data.
+//
+// Materials, particle types, pair rules and the particle budget, all by name, with defaults in place.
+// The same struct is built in code, read from an effects config JSON file (contactfx_scene), edited in
+// the testbed and written back. Validate() lists every problem with the field path, e.g.
+// `rules[2].threshold`; Effects refuses an invalid configuration with the same list.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "contactfx/error.h"
+#include "contactfx/particle_types.h"
+#include "contactfx/rules.h"
+
+namespace cfx
+{
+
+/// Which particle makes room when the pool is full.
+enum class RecyclePolicy : std::uint8_t
+{
+    oldest, ///< the particle spawned first
+};
+
+/// The particle budget.
+struct ParticleBudget
+{
+    std::uint32_t capacity = 4096; ///< hard cap on live particles, 1 .. 4,000,000
+    RecyclePolicy recycle = RecyclePolicy::oldest;
+
+    bool operator==(const ParticleBudget&) const = default;
+};
+
+/// A complete effects configuration.
+struct EffectsConfig
+{
+    std::string name;                          ///< for display ("tutorial", "default")
+    std::vector<std::string> materials;        ///< unique, non-empty names; at most 65534
+    std::vector<ParticleTypeDef> particleTypes; ///< unique names
+    std::vector<RuleDef> rules;                ///< at most one per unordered material pair
+    ParticleBudget budget;
+
+    bool operator==(const EffectsConfig&) const = default;
+
+    /// Index of a material / particle type by name, or an invalid id.
+    MaterialId FindMaterial(std::string_view wanted) const;
+    ParticleTypeId FindParticleType(std::string_view wanted) const;
+};
+
+/// Every problem in `config`, each with `file` as given and the field path. Empty when valid.
+std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view file = "<api>");
+
+} // namespace cfx

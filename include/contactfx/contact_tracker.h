@@ -1,0 +1,88 @@
+// contactfx: which contacts may make effects right now.
+//
+// The tracker is the b2ContactListener that Effects installs on the world. For each rule it keeps the
+// touching contacts whose two fixtures' materials select that rule, in a dense array (insertion order,
+// swap-remove), plus the PostSolve normal impulses of each manifold point. Callbacks only record: the
+// world is locked while they run. Every callback is forwarded, unchanged, to the application's own
+// listener when it has one, after contactfx has recorded it.
+//
+// A contact leaves tracking when it ends (EndContact: also sent by Box2D when a fixture or body is
+// destroyed, a body disabled, or a filter change stops the pair from colliding) and when one of its
+// fixtures becomes a sensor (found by Prune() after the step; PreSolve brings it back if the fixture
+// becomes solid again while still touching). Nothing dangles: a tracked b2Contact* is always alive.
+//
+// Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
+#pragma once
+
+#include <box2d/b2_world_callbacks.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "contactfx/detail/pointer_map.h"
+#include "contactfx/materials.h"
+#include "contactfx/rules.h"
+
+class b2Contact;
+
+namespace cfx
+{
+
+/// A touching contact that a rule watches.
+struct TrackedContact
+{
+    b2Contact* contact = nullptr;
+    RuleId rule;
+    bool swapped = false;          ///< fixture A carries the rule's materialB (so A and B are swapped)
+    std::uint32_t id = 0;          ///< unique per tracking span, from 1, in order of tracking
+    std::uint64_t beganStep = 0;   ///< value of the step counter when tracking began
+    float normalImpulse[2] = {};   ///< N*s, largest PostSolve normal impulse per manifold point this step
+    float emissionCarry[2] = {};   ///< fraction of a particle owed per manifold point (rate emission)
+};
+
+class ContactTracker final : public b2ContactListener
+{
+public:
+    /// `rules` and `materials` must outlive the tracker.
+    ContactTracker(const RuleTable& rules, const FixtureMaterials& materials);
+
+    /// The application's listener, forwarded every callback; may be null.
+    void SetForward(b2ContactListener* listener) { m_forward = listener; }
+    b2ContactListener* Forward() const { return m_forward; }
+
+    /// Touching contacts of one rule, in a stable, deterministic order.
+    std::span<TrackedContact> Contacts(RuleId rule) { return m_byRule[rule.index]; }
+    std::span<const TrackedContact> Contacts(RuleId rule) const { return m_byRule[rule.index]; }
+    int RuleCount() const { return static_cast<int>(m_byRule.size()); }
+    std::size_t TrackedCount() const { return m_index.Size(); }
+    bool IsTracked(const b2Contact* contact) const { return m_index.Find(contact) != nullptr; }
+
+    /// After b2World::Step: drops contacts that became sensors or stopped touching without EndContact.
+    void Prune();
+    /// Before the next b2World::Step: zeroes the recorded impulses and advances the step counter.
+    void EndStep();
+
+    /// Drops every contact that involves `fixture` (before it is destroyed by the application).
+    void ForgetFixture(const b2Fixture* fixture);
+
+    // b2ContactListener: record, then forward.
+    void BeginContact(b2Contact* contact) override;
+    void EndContact(b2Contact* contact) override;
+    void PreSolve(b2Contact* contact, const b2Manifold* oldManifold) override;
+    void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
+
+private:
+    void Track(b2Contact* contact);
+    void Untrack(b2Contact* contact);
+
+    const RuleTable& m_rules;
+    const FixtureMaterials& m_materials;
+    b2ContactListener* m_forward = nullptr;
+    std::vector<std::vector<TrackedContact>> m_byRule;
+    detail::PointerMap m_index; // contact -> (rule << 32) | slot
+    std::uint32_t m_nextId = 1;
+    std::uint64_t m_step = 0;
+};
+
+} // namespace cfx

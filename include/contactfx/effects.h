@@ -1,0 +1,120 @@
+// contactfx: everything for one b2World behind one object.
+//
+//     b2World world(gravity);                    // the application's world
+//     cfx::Effects fx(world, cfx::EffectsDef{}); // default preset; installs its contact listener
+//     fx.SetMaterial(tyreFixture, fx.FindMaterial("rubber"));
+//     for (;;) { world.Step(dt, 8, 3); fx.Step(dt); draw(fx.Particles()); }
+//
+// Data flows one way, once per step: Box2D's callbacks record touching contacts and impulses
+// (ContactTracker) while the world steps; Effects::Step then turns every manifold point of every tracked
+// contact into an intensity, emits particles at a rate that grows with it, finds where they start, and
+// advances the particles. Nothing is created or destroyed inside Box2D callbacks.
+//
+// Lifetime: create after the world, destroy before it. Effects installs itself as the world's contact
+// and destruction listener; give it the application's own listeners (EffectsDef or the setters) and it
+// forwards every callback to them. The destructor puts the application's listeners back.
+// Threading: one thread, the one that steps the world.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "contactfx/config.h"
+#include "contactfx/contact_tracker.h"
+#include "contactfx/particle_system.h"
+
+class b2World;
+class b2Body;
+class b2Fixture;
+class b2ContactListener;
+class b2DestructionListener;
+
+namespace cfx
+{
+
+namespace detail
+{
+class Emitter;
+}
+
+/// How to create an Effects object.
+struct EffectsDef
+{
+    EffectsConfig config;                               ///< validated on creation; see presets.h
+    std::uint64_t seed = 1;                             ///< seeds every random choice
+    b2ContactListener* contactListener = nullptr;       ///< the application's, may be null
+    b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
+};
+
+/// Counters of one rule.
+struct RuleStats
+{
+    std::uint32_t contacts = 0;    ///< tracked contacts now
+    std::uint32_t contactsMax = 0; ///< most tracked contacts at once
+    std::uint64_t spawned = 0;     ///< particles emitted in all
+    std::uint32_t spawnedLastStep = 0;
+    float intensityMaxLastStep = 0.0f; ///< largest sample intensity in the last step
+};
+
+/// Counters since creation.
+struct EffectsStats
+{
+    std::uint64_t steps = 0;
+    double time = 0.0;                       ///< s, sum of step times
+    std::vector<std::uint64_t> spawnedByType; ///< per particle type
+    std::vector<RuleStats> rules;            ///< per rule
+    std::uint32_t live = 0;
+    std::uint32_t liveMax = 0;
+    std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture
+    std::uint64_t recycled = 0;           ///< live particles replaced because the pool was full
+};
+
+class Effects
+{
+public:
+    /// Throws InputError (file "<api>", field path) when def.config is invalid.
+    Effects(b2World& world, const EffectsDef& def);
+    ~Effects();
+    Effects(const Effects&) = delete;
+    Effects& operator=(const Effects&) = delete;
+
+    MaterialId FindMaterial(std::string_view name) const { return m_config.FindMaterial(name); }
+    /// Gives `fixture` a material (an invalid id removes it). Takes effect for contacts that begin later.
+    void SetMaterial(b2Fixture* fixture, MaterialId material);
+    /// Gives every fixture of `body` the material.
+    void SetMaterial(b2Body* body, MaterialId material);
+    MaterialId GetMaterial(const b2Fixture* fixture) const { return m_materials.Get(fixture); }
+    /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
+    /// material and its contacts. Fixtures destroyed with their body are handled automatically.
+    void ForgetFixture(b2Fixture* fixture);
+
+    void SetContactListener(b2ContactListener* listener) { m_tracker.SetForward(listener); }
+    void SetDestructionListener(b2DestructionListener* listener);
+
+    /// Runs after each b2World::Step with the same dt (s, > 0): emission, spawning, particle motion.
+    void Step(float dt);
+
+    const EffectsStats& Stats() const { return m_stats; }
+    ParticleView Particles() const { return m_particles.View(); }
+    const EffectsConfig& Config() const { return m_config; }
+    const ContactTracker& Tracker() const { return m_tracker; }
+    const RuleTable& Rules() const { return m_rules; }
+    b2World& World() const { return m_world; }
+
+private:
+    class Destruction;
+
+    b2World& m_world;
+    EffectsConfig m_config;
+    RuleTable m_rules;
+    FixtureMaterials m_materials;
+    ContactTracker m_tracker;
+    ParticleSystem m_particles;
+    std::unique_ptr<Destruction> m_destruction;
+    std::unique_ptr<detail::Emitter> m_emitter;
+    EffectsStats m_stats;
+};
+
+} // namespace cfx

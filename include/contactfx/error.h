@@ -1,0 +1,43 @@
+// contactfx: errors for bad input.
+//
+// Every loader and every constructor that takes user data reports problems the same way: a list of
+// diagnostics, each naming the file (or "<api>" for values passed in code), the path of the offending
+// field (a JSON path such as `body[3].fixture[0].friction`, or a struct field such as
+// `rules[1].threshold`), and what was expected and found. Loaders collect every problem they can find
+// before giving up, so that a user fixes a file in one pass.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cfx
+{
+
+/// One problem in one input.
+struct Diagnostic
+{
+    std::string file;    ///< file name as the user gave it, or "<api>" for values passed in code
+    std::string path;    ///< JSON path or field name; empty when the problem is the whole file
+    std::string message; ///< what was expected and what was found
+    int line = 0;        ///< 1-based line for malformed JSON, 0 when unknown
+    int column = 0;      ///< 1-based column for malformed JSON, 0 when unknown
+
+    /// "file:line:column: message" or "file: path: message", on one line.
+    std::string ToString() const;
+};
+
+/// Thrown on bad input. Holds at least one diagnostic; what() is the first one's ToString().
+class InputError : public std::runtime_error
+{
+public:
+    explicit InputError(std::vector<Diagnostic> diagnostics);
+    InputError(std::string file, std::string path, std::string message);
+
+    const std::vector<Diagnostic>& Diagnostics() const { return m_diagnostics; }
+
+private:
+    std::vector<Diagnostic> m_diagnostics;
+};
+
+} // namespace cfx

@@ -1,0 +1,84 @@
+// contactfx: particle types are data.
+//
+// A particle type says how a particle starts (life, velocity from the two bodies plus spread), how it
+// moves (gravity scale, drag), how it meets the world (radius, restitution, friction, collision filter),
+// how it looks over its life (colour and size), and whether it is a light pool particle or a Box2D body
+// (the tutorial's way, for particles that must push things). The smoke, sparks and dirt of the tutorial
+// are three values of this struct (see presets.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace cfx
+{
+
+/// Linear RGBA colour, each channel in [0, 1].
+struct Color
+{
+    float r = 1.0f, g = 1.0f, b = 1.0f, a = 1.0f;
+    bool operator==(const Color&) const = default;
+};
+
+/// How particles of a type are simulated.
+enum class ParticleBackend : std::uint8_t
+{
+    pool, ///< a row in the particle pool, collides with the world by ray casts (default, fast)
+    body, ///< a Box2D body with a circle fixture (the tutorial's way): pushes what it hits, costs more
+};
+
+/// One particle type. Units: metres, seconds, kilograms. Validated when an Effects object is created.
+struct ParticleTypeDef
+{
+    std::string name; ///< unique, non-empty
+
+    // Life: 1 at birth at most, the particle dies at 0.
+    /// Start life = clamp(lifeBase + lifeFromIntensity * intensity, 0, 1). The tutorial: 0 + 0.3 * I.
+    float lifeBase = 1.0f;          ///< [0, 1]
+    float lifeFromIntensity = 0.0f; ///< >= 0, per unit of intensity
+    /// Seconds for life to fall from 1 to 0 (a particle starting at life 0.5 lives half of it). > 0.
+    float lifetime = 1.0f;
+
+    // Start velocity = inheritA * vA + inheritB * vB + slipFactor * (relative tangential velocity of the
+    // other body over the surface) + normalSpeed * surface normal + U(-spread, spread) per axis.
+    // A and B are the bodies whose materials are the rule's materialA and materialB.
+    float inheritA = 0.0f;    ///< fraction of body A's velocity at the contact point
+    float inheritB = 0.0f;    ///< fraction of body B's velocity at the contact point
+    float slipFactor = 0.0f;  ///< fraction of the slip velocity (sparks thrown along the scrape)
+    float normalSpeed = 0.0f; ///< m/s away from the surface
+    float spread = 0.0f;      ///< m/s, >= 0: uniform random per axis in [-spread, spread]
+
+    // Motion.
+    float gravityScale = 1.0f; ///< times the world's gravity; negative floats up
+    float drag = 0.0f;         ///< 1/s, >= 0: Box2D's linear damping, v *= 1 / (1 + dt * drag)
+
+    // Collision with the world's fixtures (never with other particles).
+    bool collide = true;
+    float radius = 0.02f;               ///< m, > 0
+    float restitution = 0.3f;           ///< [0, 1]: bounce
+    float friction = 0.5f;              ///< >= 0: Coulomb friction on each hit
+    std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these
+    std::uint16_t maskBits = 0x0001;     ///< ... and its categoryBits are in these
+
+    // Backend.
+    ParticleBackend backend = ParticleBackend::pool;
+    float density = 1.0f; ///< kg/m^2, > 0; body backend only
+
+    // Looks over life (life 1 -> start, life 0 -> end); the drawn opacity is colour alpha * life.
+    Color colorStart{1.0f, 1.0f, 1.0f, 1.0f};
+    Color colorEnd{1.0f, 1.0f, 1.0f, 1.0f};
+    float sizeStart = 0.05f; ///< m, drawn diameter at birth, > 0
+    float sizeEnd = 0.05f;   ///< m, drawn diameter at death, > 0
+
+    bool operator==(const ParticleTypeDef&) const = default;
+};
+
+/// What a particle of `type` looks like at `life` in [0, 1].
+struct ParticleLook
+{
+    Color color; ///< alpha already multiplied by life
+    float size;  ///< m, drawn diameter
+};
+ParticleLook LookAt(const ParticleTypeDef& type, float life);
+
+} // namespace cfx

@@ -1,0 +1,21 @@
+// contactfx: the built-in configurations.
+#pragma once
+
+#include "contactfx/config.h"
+
+namespace cfx
+{
+
+/// The tutorial, exactly: materials steel, rubber, concrete, dirt; rules steel+concrete -> sparks,
+/// rubber+concrete -> smoke, steel+dirt and rubber+dirt -> dirt; intensity |vA - vB| * fA * fB at the
+/// first manifold point, threshold 1, one particle per contact per step, particles dropped onto the
+/// static ground below the contact, Box2D bodies of radius 0.01, at most 100, oldest recycled. Life
+/// losses per step are expressed as lifetimes at the tutorial's 60 Hz.
+EffectsConfig TutorialPreset();
+
+/// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction
+/// mix, pressure-weighted, thresholds per pair, rate-based emission independent of the step rate,
+/// spawning outside both surfaces, pool particles with colour and size over life.
+EffectsConfig DefaultPreset();
+
+} // namespace cfx

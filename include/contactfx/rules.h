@@ -1,0 +1,93 @@
+// contactfx: pair rules.
+//
+// A rule says what happens when two materials rub: which particle type, from what intensity, at what
+// rate, measured how. Rules are symmetric: the rule for (steel, concrete) is also the rule for
+// (concrete, steel). RuleTable answers "which rule for these two materials" in O(1) from a dense
+// material x material matrix; it is a pure function of the two ids.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "contactfx/intensity.h"
+#include "contactfx/materials.h"
+
+namespace cfx
+{
+
+/// How intensity above the threshold becomes particles.
+enum class EmissionMode : std::uint8_t
+{
+    /// rate = ratePerIntensity * (intensity - threshold) particles per second, capped at maxRate,
+    /// accumulated across steps per manifold point: the count emitted for the same motion does not
+    /// depend on the step rate.
+    rate,
+    /// One particle per sample per step while intensity > threshold (the tutorial). Depends on the
+    /// step rate by design.
+    perStep,
+};
+
+/// Where particles start.
+enum class SpawnPlacement : std::uint8_t
+{
+    /// Outside both surfaces of the contact, found by ray casts against the two fixtures near the
+    /// contact point (polygons, circles, edges and chains, one-sided included).
+    surface,
+    /// The tutorial's: x of the contact point, y of the highest static fixture under it plus 0.05 m.
+    tutorialDrop,
+};
+
+/// One rule. Materials and particle type are named; names are resolved and checked when an Effects
+/// object is created (an unknown name is an error naming the field).
+struct RuleDef
+{
+    std::string materialA;
+    std::string materialB;
+    std::string particleType;
+    IntensityModel intensity;
+    /// Samples with intensity <= threshold emit nothing. >= 0.
+    float threshold = 1.0f;
+    EmissionMode emission = EmissionMode::rate;
+    /// Particles per second per unit of intensity above the threshold (rate mode). >= 0.
+    float ratePerIntensity = 50.0f;
+    /// Cap on one sample's rate, particles per second (rate mode). >= 0.
+    float maxRate = 1000.0f;
+    SpawnPlacement placement = SpawnPlacement::surface;
+
+    bool operator==(const RuleDef&) const = default;
+};
+
+/// Symmetric (material, material) -> rule lookup.
+class RuleTable
+{
+public:
+    RuleTable() = default;
+    /// A table for `materialCount` materials with no rules.
+    explicit RuleTable(int materialCount);
+
+    /// Sets the rule for the unordered pair {a, b}; `a` is remembered as the rule's first material.
+    /// Both ids must be valid and < material count.
+    void Set(MaterialId a, MaterialId b, RuleId rule);
+    /// The rule for the unordered pair, or RuleId{} when either id is invalid or no rule is set.
+    RuleId Find(MaterialId a, MaterialId b) const
+    {
+        if (!a.IsValid() || !b.IsValid() || a.index >= m_count || b.index >= m_count)
+        {
+            return RuleId{};
+        }
+        return m_cells[a.index * m_count + b.index];
+    }
+    int MaterialCount() const { return m_count; }
+    /// Number of rules: one more than the largest rule id set.
+    int RuleCount() const { return static_cast<int>(m_first.size()); }
+    /// The material given first when `rule` was set (the rule's materialA).
+    MaterialId FirstMaterial(RuleId rule) const { return m_first[rule.index]; }
+
+private:
+    int m_count = 0;
+    std::vector<RuleId> m_cells;      // m_count * m_count, kept symmetric
+    std::vector<MaterialId> m_first;  // per rule: its materialA
+};
+
+} // namespace cfx

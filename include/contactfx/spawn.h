@@ -1,0 +1,64 @@
+// contactfx: where a particle starts.
+//
+// A Box2D contact point lies inside both fixtures (it is the midpoint of the overlap), so a particle
+// started there is inside solid geometry: a body-backed particle gets shoved, a pool particle is stuck,
+// and behind a one-sided edge it can never come back. FindSpawnPoint looks for a point outside both
+// surfaces: it projects the contact point onto the surface fixture's boundary with a ray cast from the
+// other body's side (the outside, so one-sided edges and chains are hit from their solid-facing side),
+// lifts it by the particle's radius plus the shape's skin (b2_polygonRadius for polygons and edges), and walks along the surface, trailing side first, until the
+// particle's disc overlaps no solid fixture of the world. Circles, polygons, edges and chains all answer ray
+// casts, so one method serves every shape.
+#pragma once
+
+#include <box2d/b2_math.h>
+
+class b2World;
+class b2Fixture;
+class b2Body;
+
+namespace cfx
+{
+
+/// Decides whether a body is to be ignored by point tests (e.g. the bodies of body-backed particles).
+struct BodyFilter
+{
+    virtual ~BodyFilter() = default;
+    virtual bool Ignore(const b2Body* body) const = 0;
+};
+
+/// One contact side as seen from the surface the particle should start on.
+struct SpawnQuery
+{
+    const b2Fixture* surface = nullptr; ///< the fixture whose boundary the particle starts on
+    int surfaceChild = 0;               ///< child index of `surface` (chains)
+    b2Vec2 point{0.0f, 0.0f};           ///< contact point, world, m
+    b2Vec2 normal{0.0f, 1.0f};          ///< unit normal pointing out of `surface` toward the other fixture
+    b2Vec2 slip{0.0f, 0.0f};            ///< velocity of the other body relative to the surface, m/s
+    float radius = 0.01f;               ///< m, > 0: the particle's radius; its whole disc must be clear
+    float searchDistance = 1.0f;        ///< m: how far along the surface to look, each way
+};
+
+struct SpawnPoint
+{
+    b2Vec2 position{0.0f, 0.0f}; ///< where to start, world, m
+    b2Vec2 normal{0.0f, 1.0f};   ///< surface normal there, unit
+    bool outside = false;        ///< false when no point outside every solid fixture was found
+};
+
+/// A point near the contact outside both surfaces (see the file comment). `ignore` may be null.
+SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);
+
+/// The tutorial's placement: (x, y of the highest static fixture under x, plus 0.05 m), from a ray
+/// cast from (x, 1000) down to (x, -1000). `outside` is false when nothing static is under x (the
+/// position is then the point itself).
+SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point);
+
+/// Whether a disc overlaps no solid (non-sensor) fixture of a body `ignore` does not ignore, polygon
+/// and edge skins (b2_polygonRadius) included.
+bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
+
+/// Whether `point` is inside a solid (non-sensor) fixture of a body `ignore` does not ignore. Edges and
+/// chains have no inside.
+bool IsInsideSolid(const b2World& world, b2Vec2 point, const BodyFilter* ignore);
+
+} // namespace cfx

@@ -1,0 +1,228 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_world.h"
+
+namespace cfx::test
+{
+
+namespace
+{
+
+ParticleTypeDef Ball(float restitution, float friction = 0.5f)
+{
+    ParticleTypeDef type;
+    type.name = "ball";
+    type.radius = 0.05f;
+    type.restitution = restitution;
+    type.friction = friction;
+    type.lifetime = 100.0f;
+    return type;
+}
+
+struct ParticleWorld : TestWorld
+{
+    explicit ParticleWorld(ParticleTypeDef type, std::uint32_t capacity = 64)
+    {
+        ground = CreateGround();
+        types = {std::move(type)};
+        system = std::make_unique<ParticleSystem>(*world, types, ParticleBudget{capacity, RecyclePolicy::oldest});
+    }
+    void Add(b2Vec2 position, b2Vec2 velocity = b2Vec2(0.0f, 0.0f), float life = 1.0f)
+    {
+        system->Spawn(ParticleSpawn{position, velocity, life, ParticleTypeId{0}});
+    }
+    void StepAll(float dt = 1.0f / 60.0f)
+    {
+        world->Step(dt, 8, 3);
+        system->Step(dt, world->GetGravity());
+    }
+    b2Vec2 Position(std::uint32_t i) const
+    {
+        ParticleView view = system->View();
+        return b2Vec2(view.positionX[view.Slot(i)], view.positionY[view.Slot(i)]);
+    }
+    b2Vec2 Velocity(std::uint32_t i) const
+    {
+        ParticleView view = system->View();
+        return b2Vec2(view.velocityX[view.Slot(i)], view.velocityY[view.Slot(i)]);
+    }
+
+    b2Body* ground = nullptr;
+    std::vector<ParticleTypeDef> types;
+    std::unique_ptr<ParticleSystem> system; // destroyed before the world
+};
+
+} // namespace
+
+TEST(Particles, HardCapRecyclesTheOldestAndKeepsOrder)
+{
+    ParticleTypeDef type = Ball(0.0f);
+    type.gravityScale = 0.0f;
+    ParticleWorld scene(type, 4);
+    for (int i = 0; i < 6; ++i)
+    {
+        scene.Add(b2Vec2(static_cast<float>(i), 5.0f));
+    }
+    ASSERT_EQ(scene.system->Count(), 4u);
+    EXPECT_EQ(scene.system->Recycled(), 2u);
+    for (std::uint32_t i = 0; i < 4; ++i)
+    {
+        EXPECT_EQ(scene.Position(i).x, static_cast<float>(i + 2)) << "oldest first";
+    }
+    scene.StepAll();
+    scene.Add(b2Vec2(9.0f, 5.0f));
+    EXPECT_EQ(scene.Position(0).x, 3.0f);
+    EXPECT_EQ(scene.Position(3).x, 9.0f);
+}
+
+TEST(Particles, DeadParticlesLeaveAndOrderStays)
+{
+    ParticleTypeDef type = Ball(0.0f);
+    type.gravityScale = 0.0f;
+    type.lifetime = 1.0f;
+    ParticleWorld scene(type, 8);
+    scene.Add(b2Vec2(0.0f, 5.0f), b2Vec2(0.0f, 0.0f), 1.0f);
+    scene.Add(b2Vec2(1.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.1f); // dies after 0.1 s
+    scene.Add(b2Vec2(2.0f, 5.0f), b2Vec2(0.0f, 0.0f), 1.0f);
+    scene.Add(b2Vec2(3.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.0f); // never added
+    EXPECT_EQ(scene.system->Count(), 3u);
+    for (int i = 0; i < 7; ++i)
+    {
+        scene.StepAll();
+    }
+    ASSERT_EQ(scene.system->Count(), 2u);
+    EXPECT_EQ(scene.Position(0).x, 0.0f);
+    EXPECT_EQ(scene.Position(1).x, 2.0f);
+    EXPECT_NEAR(scene.system->View().life[scene.system->View().Slot(0)], 1.0f - 7.0f / 60.0f, 1e-5f);
+}
+
+TEST(Particles, SparksBounceOnTheGround)
+{
+    ParticleWorld scene(Ball(0.8f));
+    scene.Add(b2Vec2(0.0f, 2.0f));
+    float lowest = 10.0f;
+    bool bounced = false;
+    for (int i = 0; i < 120; ++i)
+    {
+        float before = scene.Velocity(0).y;
+        scene.StepAll();
+        lowest = std::min(lowest, scene.Position(0).y);
+        bounced = bounced || (before < -3.0f && scene.Velocity(0).y > 3.0f);
+    }
+    EXPECT_TRUE(bounced);
+    EXPECT_GE(lowest, 0.05f - 1e-4f);
+}
+
+TEST(Particles, DirtLandsAndRests)
+{
+    ParticleWorld scene(Ball(0.2f, 0.9f));
+    scene.Add(b2Vec2(0.0f, 3.0f), b2Vec2(4.0f, 2.0f));
+    for (int i = 0; i < 240; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 1e-3f);
+    EXPECT_LT(scene.Velocity(0).Length(), 0.05f);
+}
+
+TEST(Particles, NoTunnellingAt50MetresPerSecond)
+{
+    ParticleWorld scene(Ball(0.0f));
+    for (int i = 0; i < 10; ++i)
+    {
+        scene.Add(b2Vec2(0.1f * static_cast<float>(i), 5.0f + 0.37f * static_cast<float>(i)), b2Vec2(3.0f, -50.0f));
+    }
+    for (int step = 0; step < 60; ++step)
+    {
+        scene.StepAll();
+        for (std::uint32_t i = 0; i < 10; ++i)
+        {
+            ASSERT_GE(scene.Position(i).y, 0.0f) << "particle " << i << " step " << step;
+        }
+    }
+}
+
+TEST(Particles, NeverCollideWithEachOther)
+{
+    ParticleTypeDef type = Ball(1.0f);
+    type.gravityScale = 0.0f;
+    ParticleWorld scene(type);
+    scene.Add(b2Vec2(-1.0f, 5.0f), b2Vec2(2.0f, 0.0f));
+    scene.Add(b2Vec2(1.0f, 5.0f), b2Vec2(-2.0f, 0.0f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).x, 1.0f, 1e-4f);
+    EXPECT_NEAR(scene.Position(1).x, -1.0f, 1e-4f);
+}
+
+TEST(Particles, OneSidedEdgeIsSolidOnlyFromItsFront)
+{
+    ParticleTypeDef type = Ball(0.0f);
+    ParticleWorld scene(type);
+    b2EdgeShape edge;
+    edge.SetOneSided(b2Vec2(20.0f, 3.0f), b2Vec2(10.0f, 3.0f), b2Vec2(-10.0f, 3.0f), b2Vec2(-20.0f, 3.0f));
+    b2BodyDef def;
+    scene.world->CreateBody(&def)->CreateFixture(&edge, 0.0f);
+    scene.Add(b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 10.0f)); // from below: passes up through the edge
+    for (int i = 0; i < 180; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 3.05f, 1e-3f) << "came up through the back, then landed on the front";
+}
+
+TEST(Particles, FilterDecidesWhatIsHit)
+{
+    ParticleTypeDef type = Ball(0.0f);
+    type.maskBits = 0x0004; // the ground is category 1: not hit
+    ParticleWorld scene(type);
+    scene.Add(b2Vec2(0.0f, 1.0f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_LT(scene.Position(0).y, -1.0f);
+}
+
+TEST(Particles, BodyBackedParticlesLandToo)
+{
+    ParticleTypeDef type = Ball(0.2f, 0.9f);
+    type.backend = ParticleBackend::body;
+    ParticleWorld scene(type, 2);
+    scene.Add(b2Vec2(0.0f, 3.0f), b2Vec2(1.0f, 0.0f));
+    EXPECT_EQ(scene.world->GetBodyCount(), 2);
+    for (int i = 0; i < 240; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 0.01f);
+    // Recycling destroys the old body; destruction of the system destroys the rest.
+    scene.Add(b2Vec2(1.0f, 3.0f));
+    scene.Add(b2Vec2(2.0f, 3.0f));
+    EXPECT_EQ(scene.world->GetBodyCount(), 3);
+    scene.system.reset();
+    EXPECT_EQ(scene.world->GetBodyCount(), 1);
+}
+
+TEST(Particles, ColourAndSizeOverLife)
+{
+    ParticleTypeDef type;
+    type.colorStart = Color{1.0f, 0.0f, 0.0f, 1.0f};
+    type.colorEnd = Color{0.0f, 0.0f, 1.0f, 1.0f};
+    type.sizeStart = 0.1f;
+    type.sizeEnd = 0.5f;
+    ParticleLook birth = LookAt(type, 1.0f);
+    ParticleLook middle = LookAt(type, 0.5f);
+    EXPECT_FLOAT_EQ(birth.color.r, 1.0f);
+    EXPECT_FLOAT_EQ(birth.size, 0.1f);
+    EXPECT_FLOAT_EQ(middle.color.r, 0.5f);
+    EXPECT_FLOAT_EQ(middle.color.b, 0.5f);
+    EXPECT_FLOAT_EQ(middle.color.a, 0.5f);
+    EXPECT_FLOAT_EQ(middle.size, 0.3f);
+}
+
+} // namespace cfx::test

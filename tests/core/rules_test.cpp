@@ -1,0 +1,120 @@
+#include <gtest/gtest.h>
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+
+#include "contactfx/config.h"
+#include "contactfx/effects.h"
+#include "contactfx/presets.h"
+#include "contactfx/rules.h"
+
+namespace cfx
+{
+
+TEST(RuleTable, IsSymmetric)
+{
+    RuleTable table(4);
+    table.Set(MaterialId{0}, MaterialId{2}, RuleId{7});
+    EXPECT_EQ(table.Find(MaterialId{0}, MaterialId{2}), RuleId{7});
+    EXPECT_EQ(table.Find(MaterialId{2}, MaterialId{0}), RuleId{7});
+    EXPECT_EQ(table.FirstMaterial(RuleId{7}), MaterialId{0});
+    EXPECT_FALSE(table.Find(MaterialId{0}, MaterialId{1}).IsValid());
+    EXPECT_FALSE(table.Find(MaterialId{}, MaterialId{2}).IsValid());
+    EXPECT_FALSE(table.Find(MaterialId{9}, MaterialId{2}).IsValid());
+}
+
+TEST(RuleTable, AnyNumberOfRules)
+{
+    const int materials = 40;
+    RuleTable table(materials);
+    std::uint16_t next = 0;
+    for (int a = 0; a < materials; ++a)
+    {
+        for (int b = a; b < materials; ++b)
+        {
+            table.Set(MaterialId{static_cast<std::uint16_t>(a)}, MaterialId{static_cast<std::uint16_t>(b)},
+                      RuleId{next++});
+        }
+    }
+    EXPECT_EQ(table.RuleCount(), 40 * 41 / 2);
+    EXPECT_EQ(table.Find(MaterialId{39}, MaterialId{3}), table.Find(MaterialId{3}, MaterialId{39}));
+}
+
+TEST(Presets, TutorialTableHasFourMaterialsAndFourRules)
+{
+    EffectsConfig tutorial = TutorialPreset();
+    ASSERT_EQ(tutorial.materials.size(), 4u);
+    ASSERT_EQ(tutorial.rules.size(), 4u);
+    EXPECT_TRUE(Validate(tutorial).empty());
+    EXPECT_TRUE(Validate(DefaultPreset()).empty());
+    auto ruleFor = [&](const char* a, const char* b) -> std::string
+    {
+        for (const RuleDef& rule : tutorial.rules)
+        {
+            if ((rule.materialA == a && rule.materialB == b) || (rule.materialA == b && rule.materialB == a))
+            {
+                return rule.particleType;
+            }
+        }
+        return "none";
+    };
+    EXPECT_EQ(ruleFor("steel", "concrete"), "sparks");
+    EXPECT_EQ(ruleFor("concrete", "rubber"), "smoke");
+    EXPECT_EQ(ruleFor("dirt", "steel"), "dirt");
+    EXPECT_EQ(ruleFor("rubber", "dirt"), "dirt");
+    EXPECT_EQ(ruleFor("steel", "rubber"), "none");
+    EXPECT_EQ(tutorial.budget.capacity, 100u);
+    for (const RuleDef& rule : tutorial.rules)
+    {
+        EXPECT_EQ(rule.threshold, 1.0f);
+        EXPECT_EQ(rule.emission, EmissionMode::perStep);
+        EXPECT_EQ(rule.intensity.speed, SpeedMode::full);
+        EXPECT_EQ(rule.intensity.friction, FrictionMix::product);
+        EXPECT_EQ(rule.intensity.points, ManifoldPoints::first);
+    }
+}
+
+TEST(Config, ValidateNamesEveryBadField)
+{
+    EffectsConfig config = DefaultPreset();
+    config.rules[1].threshold = std::nanf("");
+    config.rules[2].materialB = "glass";
+    config.particleTypes[0].radius = -1.0f;
+    config.particleTypes[1].lifetime = 0.0f;
+    config.rules.push_back(config.rules[0]);
+    std::swap(config.rules.back().materialA, config.rules.back().materialB);
+    config.budget.capacity = 0;
+    std::vector<Diagnostic> problems = Validate(config, "fx.json");
+    std::vector<std::string> paths;
+    for (const Diagnostic& problem : problems)
+    {
+        EXPECT_EQ(problem.file, "fx.json");
+        paths.push_back(problem.path);
+    }
+    EXPECT_EQ(paths, (std::vector<std::string>{"particleTypes[0].radius", "particleTypes[1].lifetime",
+                                               "rules[1].threshold", "rules[2].materialB", "rules[4]",
+                                               "budget.capacity"}));
+    EXPECT_NE(problems[2].message.find("NaN"), std::string::npos);
+}
+
+TEST(Config, EffectsRefusesAnInvalidConfig)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    EffectsDef def;
+    def.config = DefaultPreset();
+    def.config.particleTypes[2].drag = -3.0f;
+    try
+    {
+        Effects effects(world, def);
+        FAIL() << "expected InputError";
+    }
+    catch (const InputError& error)
+    {
+        EXPECT_EQ(error.Diagnostics().size(), 1u);
+        EXPECT_EQ(error.Diagnostics()[0].path, "particleTypes[2].drag");
+        EXPECT_NE(std::string(error.what()).find("particleTypes[2].drag"), std::string::npos);
+    }
+}
+
+} // namespace cfx

@@ -1,0 +1,198 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_world.h"
+
+namespace cfx::test
+{
+
+namespace
+{
+
+// Particles that stay where they start: their positions after a step are their spawn points.
+EffectsConfig StillParticles()
+{
+    EffectsConfig config = OneRule("steel", "concrete");
+    ParticleTypeDef& sparks = config.particleTypes[config.FindParticleType("sparks").index];
+    sparks.spread = 0.0f;
+    sparks.normalSpeed = 0.0f;
+    sparks.slipFactor = 0.0f;
+    sparks.gravityScale = 0.0f;
+    sparks.collide = false;
+    config.rules[0].threshold = 0.2f;
+    return config;
+}
+
+// Whether `point` is on the solid side of (or inside) a fixture, tested shape by shape.
+bool InsideOrBehind(const b2Fixture* fixture, b2Vec2 point)
+{
+    const b2Shape* shape = fixture->GetShape();
+    const b2Transform& xf = fixture->GetBody()->GetTransform();
+    if (shape->GetType() == b2Shape::e_circle || shape->GetType() == b2Shape::e_polygon)
+    {
+        return fixture->TestPoint(point);
+    }
+    // Edges and chains: the side of the nearest child edge decides.
+    float nearest = 1e30f;
+    bool behind = false;
+    for (int child = 0; child < shape->GetChildCount(); ++child)
+    {
+        b2EdgeShape edge;
+        if (shape->GetType() == b2Shape::e_chain)
+        {
+            static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+        }
+        else
+        {
+            edge = *static_cast<const b2EdgeShape*>(shape);
+        }
+        b2Vec2 v1 = b2Mul(xf, edge.m_vertex1);
+        b2Vec2 v2 = b2Mul(xf, edge.m_vertex2);
+        b2Vec2 e = v2 - v1;
+        float along = b2Clamp(b2Dot(point - v1, e) / e.LengthSquared(), 0.0f, 1.0f);
+        float distance = b2Distance(point, v1 + along * e);
+        if (distance < nearest)
+        {
+            nearest = distance;
+            b2Vec2 front(e.y, -e.x); // Box2D's one-sided edges collide on their right side
+            behind = edge.m_oneSided && b2Dot(point - v1, front) < 0.0f;
+        }
+    }
+    return behind;
+}
+
+// Slides `mover` over `surface` and checks every start point against both fixtures.
+void ExpectSpawnsOutside(TestWorld& scene, b2Body* surface, b2Body* mover, b2Vec2 velocity, float angularVelocity = 0.0f)
+{
+    Effects& fx = scene.Attach(StillParticles());
+    const float radius = fx.Config().particleTypes[fx.Config().FindParticleType("sparks").index].radius;
+    fx.SetMaterial(surface, fx.FindMaterial("concrete"));
+    fx.SetMaterial(mover, fx.FindMaterial("steel"));
+    std::uint32_t checked = 0;
+    for (int i = 0; i < 90; ++i)
+    {
+        mover->SetLinearVelocity(b2Vec2(velocity.x, mover->GetLinearVelocity().y + velocity.y));
+        mover->SetAngularVelocity(angularVelocity);
+        scene.Step();
+        // The particles started this step: the newest ones (the mover has not moved since).
+        ParticleView view = fx.Particles();
+        for (std::uint32_t k = view.count - fx.Stats().rules[0].spawnedLastStep; k < view.count; ++k)
+        {
+            // The particle's whole disc, not only its centre, starts outside both shapes.
+            const b2Vec2 centre(view.positionX[view.Slot(k)], view.positionY[view.Slot(k)]);
+            for (int around = 0; around <= 8; ++around)
+            {
+                const float angle = 0.785398f * static_cast<float>(around);
+                const float reach = around == 8 ? 0.0f : 0.9f * radius;
+                const b2Vec2 p = centre + reach * b2Vec2(std::cos(angle), std::sin(angle));
+                ASSERT_FALSE(InsideOrBehind(surface->GetFixtureList(), p)) << "in the surface at " << p.x << "," << p.y;
+                ASSERT_FALSE(InsideOrBehind(mover->GetFixtureList(), p)) << "in the mover at " << p.x << "," << p.y;
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 20u);
+    EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+}
+
+b2Body* StaticBodyWith(b2World& world, const b2Shape& shape)
+{
+    b2BodyDef def;
+    b2Body* body = world.CreateBody(&def);
+    b2FixtureDef fixture;
+    fixture.shape = &shape;
+    fixture.friction = 0.8f;
+    body->CreateFixture(&fixture);
+    return body;
+}
+
+} // namespace
+
+TEST(Spawn, PolygonOnPolygon)
+{
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, box, b2Vec2(4.0f, 0.0f));
+}
+
+TEST(Spawn, CircleOnPolygon)
+{
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, wheel, b2Vec2(0.0f, 0.0f), -20.0f);
+}
+
+TEST(Spawn, PolygonOnCircle)
+{
+    TestWorld scene;
+    b2CircleShape circle;
+    circle.m_radius = 3.0f;
+    b2Body* drum = StaticBodyWith(*scene.world, circle);
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 3.25f), 0.25f, 0.25f, 0.5f);
+    ExpectSpawnsOutside(scene, drum, box, b2Vec2(3.0f, 0.0f));
+}
+
+TEST(Spawn, PolygonOnTwoSidedEdge)
+{
+    TestWorld scene;
+    b2EdgeShape edge;
+    edge.SetTwoSided(b2Vec2(-40.0f, 0.0f), b2Vec2(40.0f, 0.0f));
+    b2Body* ground = StaticBodyWith(*scene.world, edge);
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, box, b2Vec2(4.0f, 0.0f));
+}
+
+TEST(Spawn, PolygonOnOneSidedEdge)
+{
+    TestWorld scene;
+    b2EdgeShape edge;
+    // Right side of v1 -> v2 is the front: v1 right of v2 makes the front face up.
+    edge.SetOneSided(b2Vec2(50.0f, 0.0f), b2Vec2(40.0f, 0.0f), b2Vec2(-40.0f, 0.0f), b2Vec2(-50.0f, 0.0f));
+    b2Body* ground = StaticBodyWith(*scene.world, edge);
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, box, b2Vec2(4.0f, 0.0f));
+}
+
+TEST(Spawn, CircleOnOpenChain)
+{
+    TestWorld scene;
+    std::vector<b2Vec2> points;
+    for (int i = 0; i <= 40; ++i)
+    {
+        float x = 40.0f - 2.0f * static_cast<float>(i); // right to left: front faces up
+        points.emplace_back(x, 0.3f * std::sin(0.2f * x));
+    }
+    b2ChainShape chain;
+    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(42.0f, 0.0f), b2Vec2(-42.0f, 0.0f));
+    b2Body* ground = StaticBodyWith(*scene.world, chain);
+    b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.8f), 0.4f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, wheel, b2Vec2(3.0f, 0.0f), -20.0f);
+}
+
+TEST(Spawn, PolygonOnChainLoop)
+{
+    TestWorld scene;
+    b2Vec2 square[4] = {b2Vec2(-20.0f, -2.0f), b2Vec2(20.0f, -2.0f), b2Vec2(20.0f, 0.0f), b2Vec2(-20.0f, 0.0f)};
+    b2ChainShape loop;
+    loop.CreateLoop(square, 4); // counter-clockwise: the front is outside
+    b2Body* ground = StaticBodyWith(*scene.world, loop);
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    ExpectSpawnsOutside(scene, ground, box, b2Vec2(4.0f, 0.0f));
+}
+
+TEST(Spawn, TutorialDropLandsOnTheHighestStaticFixture)
+{
+    TestWorld scene;
+    scene.CreateGround();
+    scene.CreateBox(b2Vec2(5.0f, 2.0f), 1.0f, 1.0f, 0.5f, b2_staticBody);
+    SpawnPoint onBlock = TutorialDropPoint(*scene.world, b2Vec2(5.0f, 0.0f));
+    EXPECT_TRUE(onBlock.outside);
+    EXPECT_NEAR(onBlock.position.y, 3.05f, 1e-4f);
+    SpawnPoint onGround = TutorialDropPoint(*scene.world, b2Vec2(0.0f, 0.3f));
+    EXPECT_NEAR(onGround.position.y, 0.05f, 1e-4f);
+}
+
+} // namespace cfx::test

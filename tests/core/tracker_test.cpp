@@ -1,0 +1,187 @@
+#include <gtest/gtest.h>
+
+#include "test_world.h"
+
+namespace cfx::test
+{
+
+namespace
+{
+
+// A steel box resting on concrete ground.
+struct BoxOnGround : TestWorld
+{
+    BoxOnGround()
+    {
+        ground = CreateGround();
+        box = CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    }
+    void Assign()
+    {
+        effects->SetMaterial(ground, Material("concrete"));
+        effects->SetMaterial(box, Material("steel"));
+    }
+    std::size_t Tracked(int rule = 0) const { return effects->Tracker().Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size(); }
+
+    b2Body* ground = nullptr;
+    b2Body* box = nullptr;
+};
+
+} // namespace
+
+TEST(ContactTracker, TracksTouchingContactsOfARule)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    EXPECT_EQ(scene.Tracked(0), 1u);
+    scene.box->SetTransform(b2Vec2(0.0f, 5.0f), 0.0f);
+    scene.Step();
+    scene.Step();
+    EXPECT_EQ(scene.Tracked(0), 0u);
+}
+
+TEST(ContactTracker, FixtureWithoutMaterialIsNotTracked)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.effects->SetMaterial(scene.ground, scene.Material("concrete"));
+    scene.Step();
+    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
+}
+
+TEST(ContactTracker, DestroyedBodyLeavesNoTrackedContact)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    ASSERT_EQ(scene.Tracked(0), 1u);
+    scene.world->DestroyBody(scene.box);
+    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
+    scene.Step(); // must not touch the destroyed contact
+    EXPECT_EQ(scene.Tracked(0), 0u);
+}
+
+TEST(ContactTracker, DestroyedFixtureLeavesNoTrackedContactOrMaterial)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    b2Fixture* fixture = scene.box->GetFixtureList();
+    scene.effects->ForgetFixture(fixture);
+    scene.box->DestroyFixture(fixture);
+    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
+    EXPECT_FALSE(scene.effects->GetMaterial(fixture).IsValid());
+    scene.Step();
+}
+
+TEST(ContactTracker, BodyDestructionForgetsTheFixturesMaterials)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    const b2Fixture* fixture = scene.box->GetFixtureList();
+    ASSERT_TRUE(scene.effects->GetMaterial(fixture).IsValid());
+    scene.world->DestroyBody(scene.box);
+    EXPECT_FALSE(scene.effects->GetMaterial(fixture).IsValid());
+}
+
+TEST(ContactTracker, SensorLeavesTrackingAndSolidComesBack)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    ASSERT_EQ(scene.Tracked(0), 1u);
+    scene.box->GetFixtureList()->SetSensor(true);
+    scene.Step();
+    EXPECT_EQ(scene.Tracked(0), 0u);
+    scene.box->SetGravityScale(0.0f);
+    scene.box->SetLinearVelocity(b2Vec2(0.0f, 0.0f));
+    scene.box->GetFixtureList()->SetSensor(false);
+    scene.Step();
+    EXPECT_EQ(scene.Tracked(0), 1u);
+}
+
+TEST(ContactTracker, FilterChangeEndsTracking)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    ASSERT_EQ(scene.Tracked(0), 1u);
+    b2Filter filter;
+    filter.maskBits = 0;
+    scene.box->GetFixtureList()->SetFilterData(filter);
+    scene.Step();
+    EXPECT_EQ(scene.Tracked(0), 0u);
+}
+
+TEST(ContactTracker, ApplicationListenerReceivesEveryCallback)
+{
+    // The same scene with and without contactfx in between gives the same callback sequence.
+    auto run = [](bool withEffects)
+    {
+        RecordingListener recorder;
+        BoxOnGround scene;
+        scene.box->SetLinearVelocity(b2Vec2(3.0f, -2.0f));
+        if (withEffects)
+        {
+            scene.Attach(DefaultPreset(), 1, &recorder);
+            scene.Assign();
+        }
+        else
+        {
+            scene.world->SetContactListener(&recorder);
+        }
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.Step();
+        }
+        scene.world->DestroyBody(scene.box);
+        scene.effects.reset();
+        return recorder.calls;
+    };
+    std::vector<std::string> direct = run(false);
+    std::vector<std::string> forwarded = run(true);
+    ASSERT_GT(direct.size(), 50u);
+    EXPECT_EQ(direct.front(), "begin");
+    EXPECT_EQ(direct.back(), "end");
+    EXPECT_EQ(forwarded, direct);
+}
+
+TEST(ContactTracker, RecordsPostSolveImpulses)
+{
+    BoxOnGround scene;
+    scene.Attach();
+    scene.Assign();
+    for (int i = 0; i < 30; ++i)
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        if (i < 29)
+        {
+            scene.effects->Step(1.0f / 60.0f);
+        }
+    }
+    const TrackedContact& tracked = scene.effects->Tracker().Contacts(RuleId{0})[0];
+    // A resting 1 kg box: the two points share its weight, 10 N * (1/60) s per step.
+    EXPECT_NEAR(tracked.normalImpulse[0] + tracked.normalImpulse[1], 10.0f / 60.0f, 0.02f);
+}
+
+TEST(ContactTracker, EffectsRestoresTheApplicationListeners)
+{
+    RecordingListener recorder;
+    TestWorld scene;
+    scene.world->SetContactListener(&recorder);
+    scene.Attach(DefaultPreset(), 1, &recorder);
+    scene.effects.reset();
+    scene.CreateGround();
+    scene.CreateBox(b2Vec2(0.0f, 0.49f), 0.5f, 0.5f, 0.5f);
+    scene.Step();
+    EXPECT_FALSE(recorder.calls.empty());
+}
+
+} // namespace cfx::test
