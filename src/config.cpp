@@ -64,7 +64,10 @@ public:
             Fail(path, text.str());
         }
     }
-    void NonNegative(const std::string& path, float value) { Number(path, value, 0.0f, INFINITY, "a number >= 0"); }
+    void NonNegative(const std::string& path, float value)
+    {
+        Number(path, value, 0.0f, INFINITY, "a number >= 0");
+    }
     void Positive(const std::string& path, float value)
     {
         Number(path, value, 1e-9f, INFINITY, "a number > 0");
@@ -78,7 +81,8 @@ public:
     {
         if (value < 0 || value >= count)
         {
-            Fail(path, "expected one of the " + std::to_string(count) + " named values, found " + std::to_string(value));
+            Fail(path, "expected one of the " + std::to_string(count) + " named values, found " +
+                           std::to_string(value));
         }
     }
     void Colour(const std::string& path, const Color& color)
@@ -115,6 +119,7 @@ void CheckParticleType(Checker& check, const std::string& at, const ParticleType
     check.Colour(at + ".colorEnd", type.colorEnd);
     check.Positive(at + ".sizeStart", type.sizeStart);
     check.Positive(at + ".sizeEnd", type.sizeEnd);
+    check.NonNegative(at + ".streak", type.streak);
 }
 
 void CheckRule(Checker& check, const std::string& at, const RuleDef& rule, const EffectsConfig& config)
@@ -151,7 +156,8 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
 
     if (config.materials.size() >= MaterialId::kNone)
     {
-        check.Fail("materials", "expected at most 65534 materials, found " + std::to_string(config.materials.size()));
+        check.Fail("materials",
+                   "expected at most 65534 materials, found " + std::to_string(config.materials.size()));
     }
     std::set<std::string_view> seen;
     for (std::size_t i = 0; i < config.materials.size(); ++i)

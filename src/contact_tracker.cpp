@@ -1,9 +1,8 @@
 #include "contactfx/contact_tracker.h"
 
+#include <algorithm>
 #include <box2d/b2_contact.h>
 #include <box2d/b2_fixture.h>
-
-#include <algorithm>
 
 namespace cfx
 {

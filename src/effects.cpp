@@ -1,10 +1,10 @@
 #include "contactfx/effects.h"
 
+#include "emitter.h"
+
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-
-#include "emitter.h"
 
 namespace cfx
 {
@@ -27,8 +27,8 @@ RuleTable BuildRuleTable(const EffectsConfig& config)
     RuleTable table(static_cast<int>(config.materials.size()));
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
-        table.Set(config.FindMaterial(config.rules[i].materialA), config.FindMaterial(config.rules[i].materialB),
-                  RuleId{static_cast<std::uint16_t>(i)});
+        table.Set(config.FindMaterial(config.rules[i].materialA),
+                  config.FindMaterial(config.rules[i].materialB), RuleId{static_cast<std::uint16_t>(i)});
     }
     return table;
 }

@@ -1,11 +1,10 @@
 #include "emitter.h"
 
+#include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_contact.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-
-#include <algorithm>
 #include <cmath>
 
 namespace cfx::detail
@@ -30,8 +29,8 @@ bool SurfaceIsA(const b2Fixture* fixtureA, const b2Fixture* fixtureB)
 
 } // namespace
 
-void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker, ParticleSystem& particles,
-                   EffectsStats& stats, float dt)
+void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker,
+                   ParticleSystem& particles, EffectsStats& stats, float dt)
 {
     for (int ruleIndex = 0; ruleIndex < tracker.RuleCount(); ++ruleIndex)
     {
@@ -99,7 +98,8 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
                 // Seen from the surface: its normal points toward the other body; slip is the other
                 // body's velocity over the surface, along it.
                 const b2Vec2 surfaceNormal = surfaceIsA ? manifold.normal : -manifold.normal;
-                b2Vec2 slip = surfaceIsA ? sample.velocityB - sample.velocityA : sample.velocityA - sample.velocityB;
+                b2Vec2 slip =
+                    surfaceIsA ? sample.velocityB - sample.velocityA : sample.velocityA - sample.velocityB;
                 slip -= b2Dot(slip, surfaceNormal) * surfaceNormal;
 
                 SpawnPoint start;

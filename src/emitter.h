@@ -8,10 +8,10 @@
 // the same inputs and seed give the same particles bit for bit.
 #pragma once
 
-#include <cstdint>
-
 #include "contactfx/effects.h"
 #include "random.h"
+
+#include <cstdint>
 
 namespace cfx::detail
 {

@@ -1,11 +1,10 @@
 #include "contactfx/particle_system.h"
 
+#include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -115,11 +114,13 @@ public:
     {
     }
 
-    float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2& normal, float fraction) override
+    float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2& normal,
+                        float fraction) override
     {
         const b2Filter& filter = fixture->GetFilterData();
         if (fixture->IsSensor() || (filter.maskBits & m_params.categoryBits) == 0 ||
-            (filter.categoryBits & m_params.maskBits) == 0 || m_particleBodies.Find(fixture->GetBody()) != nullptr)
+            (filter.categoryBits & m_params.maskBits) == 0 ||
+            m_particleBodies.Find(fixture->GetBody()) != nullptr)
         {
             return -1.0f;
         }
@@ -140,7 +141,8 @@ private:
 
 } // namespace
 
-void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint32_t slot, float dt, b2Vec2 gravity)
+void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint32_t slot, float dt,
+                                            b2Vec2 gravity)
 {
     b2Vec2 velocity(velocityX[slot], velocityY[slot]);
     velocity += (dt * params.gravityScale) * gravity;
@@ -156,7 +158,8 @@ void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint3
         if (sweep.hitFixture != nullptr)
         {
             b2Vec2 normal = sweep.hitNormal;
-            b2Vec2 surfaceVelocity = sweep.hitFixture->GetBody()->GetLinearVelocityFromWorldPoint(sweep.hitPoint);
+            b2Vec2 surfaceVelocity =
+                sweep.hitFixture->GetBody()->GetLinearVelocityFromWorldPoint(sweep.hitPoint);
             b2Vec2 relative = velocity - surfaceVelocity;
             float approach = b2Dot(relative, normal);
             if (approach < 0.0f)
@@ -166,7 +169,8 @@ void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint3
                 float normalChange = bounce - approach; // > 0
                 float slide = tangential.Length();
                 float slideAfter = std::max(0.0f, slide - params.friction * normalChange);
-                b2Vec2 tangentialAfter = slide > 0.0f ? (slideAfter / slide) * tangential : b2Vec2(0.0f, 0.0f);
+                b2Vec2 tangentialAfter =
+                    slide > 0.0f ? (slideAfter / slide) * tangential : b2Vec2(0.0f, 0.0f);
                 velocity = surfaceVelocity + tangentialAfter + bounce * normal;
             }
             position = sweep.hitPoint + params.radius * normal;
@@ -186,7 +190,8 @@ void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint3
     velocityY[slot] = velocity.y;
 }
 
-ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types, const ParticleBudget& budget)
+ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types,
+                               const ParticleBudget& budget)
     : m_impl(std::make_unique<Impl>(world)), m_capacity(budget.capacity)
 {
     Impl& impl = *m_impl;
@@ -259,7 +264,8 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.type[slot] = spawn.type.index;
     if (impl.anyBodyBacked)
     {
-        impl.body[slot] = params.bodyBacked ? impl.CreateBody(params, spawn.position, spawn.velocity) : nullptr;
+        impl.body[slot] =
+            params.bodyBacked ? impl.CreateBody(params, spawn.position, spawn.velocity) : nullptr;
     }
 }
 

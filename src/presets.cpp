@@ -134,6 +134,7 @@ EffectsConfig DefaultPreset()
     sparks.colorEnd = Color{1.0f, 0.35f, 0.05f, 1.0f};
     sparks.sizeStart = 0.06f;
     sparks.sizeEnd = 0.03f;
+    sparks.streak = 0.03f;
 
     ParticleTypeDef dirt;
     dirt.name = "dirt";

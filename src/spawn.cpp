@@ -1,13 +1,12 @@
 #include "contactfx/spawn.h"
 
+#include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
-#include <box2d/b2_distance.h>
 #include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-
-#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 

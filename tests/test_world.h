@@ -1,14 +1,13 @@
 // Test support: a small physics fixture (Jolt's habit) and a listener that records callbacks.
 #pragma once
 
-#include <box2d/box2d.h>
+#include "contactfx/effects.h"
+#include "contactfx/presets.h"
 
+#include <box2d/box2d.h>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include "contactfx/effects.h"
-#include "contactfx/presets.h"
 
 namespace cfx::test
 {
@@ -31,7 +30,8 @@ struct TestWorld
         return body;
     }
 
-    b2Body* CreateBox(b2Vec2 position, float halfWidth, float halfHeight, float friction, b2BodyType type = b2_dynamicBody)
+    b2Body* CreateBox(b2Vec2 position, float halfWidth, float halfHeight, float friction,
+                      b2BodyType type = b2_dynamicBody)
     {
         b2BodyDef def;
         def.type = type;
@@ -73,7 +73,8 @@ struct TestWorld
     }
 
     /// Creates the effects object with `config` (default preset when omitted).
-    Effects& Attach(EffectsConfig config = DefaultPreset(), std::uint64_t seed = 1, b2ContactListener* listener = nullptr)
+    Effects& Attach(EffectsConfig config = DefaultPreset(), std::uint64_t seed = 1,
+                    b2ContactListener* listener = nullptr)
     {
         EffectsDef def;
         def.config = std::move(config);

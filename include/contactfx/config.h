@@ -6,14 +6,14 @@
 // `rules[2].threshold`; Effects refuses an invalid configuration with the same list.
 #pragma once
 
+#include "contactfx/error.h"
+#include "contactfx/particle_types.h"
+#include "contactfx/rules.h"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "contactfx/error.h"
-#include "contactfx/particle_types.h"
-#include "contactfx/rules.h"
 
 namespace cfx
 {
@@ -36,10 +36,10 @@ struct ParticleBudget
 /// A complete effects configuration.
 struct EffectsConfig
 {
-    std::string name;                          ///< for display ("tutorial", "default")
-    std::vector<std::string> materials;        ///< unique, non-empty names; at most 65534
+    std::string name;                           ///< for display ("tutorial", "default")
+    std::vector<std::string> materials;         ///< unique, non-empty names; at most 65534
     std::vector<ParticleTypeDef> particleTypes; ///< unique names
-    std::vector<RuleDef> rules;                ///< at most one per unordered material pair
+    std::vector<RuleDef> rules;                 ///< at most one per unordered material pair
     ParticleBudget budget;
 
     bool operator==(const EffectsConfig&) const = default;

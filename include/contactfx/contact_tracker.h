@@ -14,15 +14,14 @@
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
 
-#include <box2d/b2_world_callbacks.h>
-
-#include <cstdint>
-#include <span>
-#include <vector>
-
 #include "contactfx/detail/pointer_map.h"
 #include "contactfx/materials.h"
 #include "contactfx/rules.h"
+
+#include <box2d/b2_world_callbacks.h>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 class b2Contact;
 
@@ -34,11 +33,11 @@ struct TrackedContact
 {
     b2Contact* contact = nullptr;
     RuleId rule;
-    bool swapped = false;          ///< fixture A carries the rule's materialB (so A and B are swapped)
-    std::uint32_t id = 0;          ///< unique per tracking span, from 1, in order of tracking
-    std::uint64_t beganStep = 0;   ///< value of the step counter when tracking began
-    float normalImpulse[2] = {};   ///< N*s, largest PostSolve normal impulse per manifold point this step
-    float emissionCarry[2] = {};   ///< fraction of a particle owed per manifold point (rate emission)
+    bool swapped = false;        ///< fixture A carries the rule's materialB (so A and B are swapped)
+    std::uint32_t id = 0;        ///< unique per tracking span, from 1, in order of tracking
+    std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
+    float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
+    float emissionCarry[2] = {}; ///< fraction of a particle owed per manifold point (rate emission)
 };
 
 class ContactTracker final : public b2ContactListener

@@ -16,14 +16,14 @@
 // Threading: one thread, the one that steps the world.
 #pragma once
 
+#include "contactfx/config.h"
+#include "contactfx/contact_tracker.h"
+#include "contactfx/particle_system.h"
+
 #include <cstdint>
 #include <memory>
 #include <string_view>
 #include <vector>
-
-#include "contactfx/config.h"
-#include "contactfx/contact_tracker.h"
-#include "contactfx/particle_system.h"
 
 class b2World;
 class b2Body;
@@ -42,9 +42,9 @@ class Emitter;
 /// How to create an Effects object.
 struct EffectsDef
 {
-    EffectsConfig config;                               ///< validated on creation; see presets.h
-    std::uint64_t seed = 1;                             ///< seeds every random choice
-    b2ContactListener* contactListener = nullptr;       ///< the application's, may be null
+    EffectsConfig config;                                 ///< validated on creation; see presets.h
+    std::uint64_t seed = 1;                               ///< seeds every random choice
+    b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
 };
 
@@ -62,9 +62,9 @@ struct RuleStats
 struct EffectsStats
 {
     std::uint64_t steps = 0;
-    double time = 0.0;                       ///< s, sum of step times
+    double time = 0.0;                        ///< s, sum of step times
     std::vector<std::uint64_t> spawnedByType; ///< per particle type
-    std::vector<RuleStats> rules;            ///< per rule
+    std::vector<RuleStats> rules;             ///< per rule
     std::uint32_t live = 0;
     std::uint32_t liveMax = 0;
     std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <box2d/b2_math.h>
-
 #include <cstdint>
 
 namespace cfx

@@ -5,9 +5,9 @@
 // stays the application's. A fixture without a material takes part in no rule and makes no effects.
 #pragma once
 
-#include <cstdint>
-
 #include "contactfx/detail/pointer_map.h"
+
+#include <cstdint>
 
 class b2Fixture;
 

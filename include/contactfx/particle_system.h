@@ -14,15 +14,14 @@
 // while the world steps.
 #pragma once
 
-#include <box2d/b2_math.h>
-
-#include <cstdint>
-#include <memory>
-#include <span>
-
 #include "contactfx/config.h"
 #include "contactfx/materials.h"
 #include "contactfx/spawn.h"
+
+#include <box2d/b2_math.h>
+#include <cstdint>
+#include <memory>
+#include <span>
 
 class b2World;
 class b2Body;

@@ -54,9 +54,9 @@ struct ParticleTypeDef
 
     // Collision with the world's fixtures (never with other particles).
     bool collide = true;
-    float radius = 0.02f;               ///< m, > 0
-    float restitution = 0.3f;           ///< [0, 1]: bounce
-    float friction = 0.5f;              ///< >= 0: Coulomb friction on each hit
+    float radius = 0.02f;                ///< m, > 0
+    float restitution = 0.3f;            ///< [0, 1]: bounce
+    float friction = 0.5f;               ///< >= 0: Coulomb friction on each hit
     std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these
     std::uint16_t maskBits = 0x0001;     ///< ... and its categoryBits are in these
 
@@ -69,6 +69,9 @@ struct ParticleTypeDef
     Color colorEnd{1.0f, 1.0f, 1.0f, 1.0f};
     float sizeStart = 0.05f; ///< m, drawn diameter at birth, > 0
     float sizeEnd = 0.05f;   ///< m, drawn diameter at death, > 0
+    /// s, >= 0: drawn as a line along the velocity covering this much of the motion (sparks); 0 draws
+    /// a soft round point.
+    float streak = 0.0f;
 
     bool operator==(const ParticleTypeDef&) const = default;
 };

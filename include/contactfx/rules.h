@@ -6,12 +6,12 @@
 // material x material matrix; it is a pure function of the two ids.
 #pragma once
 
+#include "contactfx/intensity.h"
+#include "contactfx/materials.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include "contactfx/intensity.h"
-#include "contactfx/materials.h"
 
 namespace cfx
 {
@@ -86,8 +86,8 @@ public:
 
 private:
     int m_count = 0;
-    std::vector<RuleId> m_cells;      // m_count * m_count, kept symmetric
-    std::vector<MaterialId> m_first;  // per rule: its materialA
+    std::vector<RuleId> m_cells;     // m_count * m_count, kept symmetric
+    std::vector<MaterialId> m_first; // per rule: its materialA
 };
 
 } // namespace cfx

@@ -5,9 +5,9 @@
 // and behind a one-sided edge it can never come back. FindSpawnPoint looks for a point outside both
 // surfaces: it projects the contact point onto the surface fixture's boundary with a ray cast from the
 // other body's side (the outside, so one-sided edges and chains are hit from their solid-facing side),
-// lifts it by the particle's radius plus the shape's skin (b2_polygonRadius for polygons and edges), and walks along the surface, trailing side first, until the
-// particle's disc overlaps no solid fixture of the world. Circles, polygons, edges and chains all answer ray
-// casts, so one method serves every shape.
+// lifts it by the particle's radius plus the shape's skin (b2_polygonRadius for polygons and edges), and
+// walks along the surface, trailing side first, until the particle's disc overlaps no solid fixture of the
+// world. Circles, polygons, edges and chains all answer ray casts, so one method serves every shape.
 #pragma once
 
 #include <box2d/b2_math.h>

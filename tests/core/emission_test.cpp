@@ -1,8 +1,7 @@
-#include <gtest/gtest.h>
+#include "test_world.h"
 
 #include <cmath>
-
-#include "test_world.h"
+#include <gtest/gtest.h>
 
 namespace cfx::test
 {

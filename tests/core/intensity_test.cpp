@@ -1,8 +1,7 @@
-#include <gtest/gtest.h>
+#include "contactfx/intensity.h"
 
 #include <cmath>
-
-#include "contactfx/intensity.h"
+#include <gtest/gtest.h>
 
 namespace cfx
 {

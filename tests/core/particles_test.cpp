@@ -1,8 +1,7 @@
-#include <gtest/gtest.h>
+#include "test_world.h"
 
 #include <algorithm>
-
-#include "test_world.h"
+#include <gtest/gtest.h>
 
 namespace cfx::test
 {
@@ -27,7 +26,8 @@ struct ParticleWorld : TestWorld
     {
         ground = CreateGround();
         types = {std::move(type)};
-        system = std::make_unique<ParticleSystem>(*world, types, ParticleBudget{capacity, RecyclePolicy::oldest});
+        system =
+            std::make_unique<ParticleSystem>(*world, types, ParticleBudget{capacity, RecyclePolicy::oldest});
     }
     void Add(b2Vec2 position, b2Vec2 velocity = b2Vec2(0.0f, 0.0f), float life = 1.0f)
     {
@@ -132,7 +132,8 @@ TEST(Particles, NoTunnellingAt50MetresPerSecond)
     ParticleWorld scene(Ball(0.0f));
     for (int i = 0; i < 10; ++i)
     {
-        scene.Add(b2Vec2(0.1f * static_cast<float>(i), 5.0f + 0.37f * static_cast<float>(i)), b2Vec2(3.0f, -50.0f));
+        scene.Add(b2Vec2(0.1f * static_cast<float>(i), 5.0f + 0.37f * static_cast<float>(i)),
+                  b2Vec2(3.0f, -50.0f));
     }
     for (int step = 0; step < 60; ++step)
     {

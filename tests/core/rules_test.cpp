@@ -1,13 +1,11 @@
-#include <gtest/gtest.h>
-
-#include <box2d/box2d.h>
-
-#include <cmath>
-
 #include "contactfx/config.h"
 #include "contactfx/effects.h"
 #include "contactfx/presets.h"
 #include "contactfx/rules.h"
+
+#include <box2d/box2d.h>
+#include <cmath>
+#include <gtest/gtest.h>
 
 namespace cfx
 {

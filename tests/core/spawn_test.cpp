@@ -1,8 +1,7 @@
-#include <gtest/gtest.h>
+#include "test_world.h"
 
 #include <cmath>
-
-#include "test_world.h"
+#include <gtest/gtest.h>
 
 namespace cfx::test
 {
@@ -63,7 +62,8 @@ bool InsideOrBehind(const b2Fixture* fixture, b2Vec2 point)
 }
 
 // Slides `mover` over `surface` and checks every start point against both fixtures.
-void ExpectSpawnsOutside(TestWorld& scene, b2Body* surface, b2Body* mover, b2Vec2 velocity, float angularVelocity = 0.0f)
+void ExpectSpawnsOutside(TestWorld& scene, b2Body* surface, b2Body* mover, b2Vec2 velocity,
+                         float angularVelocity = 0.0f)
 {
     Effects& fx = scene.Attach(StillParticles());
     const float radius = fx.Config().particleTypes[fx.Config().FindParticleType("sparks").index].radius;
@@ -86,8 +86,10 @@ void ExpectSpawnsOutside(TestWorld& scene, b2Body* surface, b2Body* mover, b2Vec
                 const float angle = 0.785398f * static_cast<float>(around);
                 const float reach = around == 8 ? 0.0f : 0.9f * radius;
                 const b2Vec2 p = centre + reach * b2Vec2(std::cos(angle), std::sin(angle));
-                ASSERT_FALSE(InsideOrBehind(surface->GetFixtureList(), p)) << "in the surface at " << p.x << "," << p.y;
-                ASSERT_FALSE(InsideOrBehind(mover->GetFixtureList(), p)) << "in the mover at " << p.x << "," << p.y;
+                ASSERT_FALSE(InsideOrBehind(surface->GetFixtureList(), p))
+                    << "in the surface at " << p.x << "," << p.y;
+                ASSERT_FALSE(InsideOrBehind(mover->GetFixtureList(), p))
+                    << "in the mover at " << p.x << "," << p.y;
             }
             ++checked;
         }
@@ -166,7 +168,8 @@ TEST(Spawn, CircleOnOpenChain)
         points.emplace_back(x, 0.3f * std::sin(0.2f * x));
     }
     b2ChainShape chain;
-    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(42.0f, 0.0f), b2Vec2(-42.0f, 0.0f));
+    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(42.0f, 0.0f),
+                      b2Vec2(-42.0f, 0.0f));
     b2Body* ground = StaticBodyWith(*scene.world, chain);
     b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.8f), 0.4f, 0.5f);
     ExpectSpawnsOutside(scene, ground, wheel, b2Vec2(3.0f, 0.0f), -20.0f);
@@ -175,7 +178,8 @@ TEST(Spawn, CircleOnOpenChain)
 TEST(Spawn, PolygonOnChainLoop)
 {
     TestWorld scene;
-    b2Vec2 square[4] = {b2Vec2(-20.0f, -2.0f), b2Vec2(20.0f, -2.0f), b2Vec2(20.0f, 0.0f), b2Vec2(-20.0f, 0.0f)};
+    b2Vec2 square[4] = {b2Vec2(-20.0f, -2.0f), b2Vec2(20.0f, -2.0f), b2Vec2(20.0f, 0.0f),
+                        b2Vec2(-20.0f, 0.0f)};
     b2ChainShape loop;
     loop.CreateLoop(square, 4); // counter-clockwise: the front is outside
     b2Body* ground = StaticBodyWith(*scene.world, loop);

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "test_world.h"
+
+#include <gtest/gtest.h>
 
 namespace cfx::test
 {
@@ -21,7 +21,10 @@ struct BoxOnGround : TestWorld
         effects->SetMaterial(ground, Material("concrete"));
         effects->SetMaterial(box, Material("steel"));
     }
-    std::size_t Tracked(int rule = 0) const { return effects->Tracker().Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size(); }
+    std::size_t Tracked(int rule = 0) const
+    {
+        return effects->Tracker().Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size();
+    }
 
     b2Body* ground = nullptr;
     b2Body* box = nullptr;

@@ -1,0 +1,91 @@
+#include "cli_common.h"
+
+#include "contactfx/error.h"
+#include "contactfx/presets.h"
+#include "contactfx/scene/effects_json.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace cfx::cli
+{
+
+void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
+{
+    command.add_option("--seconds", options.seconds, "Simulated time in seconds, (0, 86400]")
+        ->capture_default_str();
+    command.add_option("--hz", options.hz, "Steps per second, [1, 10000]")->capture_default_str();
+    command.add_option("--seed", options.seed, "Seed of every random choice, 0 .. 2^64-1")
+        ->check(CLI::Validator(
+            [](std::string& text)
+            {
+                const bool digits =
+                    !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+                return digits ? std::string() : "expected a whole number from 0 to 2^64-1, found " + text;
+            },
+            "UINT64"))
+        ->capture_default_str();
+    command.add_option("--stats", options.stats, "Write statistics as JSON to this file");
+    if (!demo)
+    {
+        command.add_option("--preset", options.preset, "Built-in effects: default or tutorial")
+            ->check(CLI::IsMember({"default", "tutorial"}))
+            ->capture_default_str();
+        command.add_option("--effects", options.effects, "Effects config JSON (overrides --preset)");
+    }
+}
+
+void CheckRunOptions(const RunOptions& options)
+{
+    if (!std::isfinite(options.seconds) || options.seconds <= 0.0 || options.seconds > 86400.0)
+    {
+        throw InputError("<command line>", "--seconds",
+                         "expected a number in (0, 86400], found " + std::to_string(options.seconds));
+    }
+    if (!std::isfinite(options.hz) || options.hz < 1.0 || options.hz > 10000.0)
+    {
+        throw InputError("<command line>", "--hz",
+                         "expected a number in [1, 10000], found " + std::to_string(options.hz));
+    }
+}
+
+EffectsConfig SelectConfig(const RunOptions& options)
+{
+    if (!options.effects.empty())
+    {
+        return LoadEffectsFile(options.effects);
+    }
+    return options.preset == "tutorial" ? TutorialPreset() : DefaultPreset();
+}
+
+std::filesystem::path ScenesDir()
+{
+    if (const char* fromEnvironment = std::getenv("CONTACTFX_SCENES"))
+    {
+        return fromEnvironment;
+    }
+    return CONTACTFX_SCENES_DIR;
+}
+
+int Guarded(const std::function<int()>& body)
+{
+    try
+    {
+        return body();
+    }
+    catch (const InputError& error)
+    {
+        for (const Diagnostic& problem : error.Diagnostics())
+        {
+            std::cerr << "contactfx: error: " << problem.ToString() << '\n';
+        }
+    }
+    catch (const std::exception& error)
+    {
+        std::cerr << "contactfx: error: " << error.what() << '\n';
+    }
+    return kExitError;
+}
+
+} // namespace cfx::cli

@@ -1,0 +1,46 @@
+// The contactfx command line: what every command shares.
+#pragma once
+
+#include "contactfx/config.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace cfx::cli
+{
+
+/// Exit codes: 0 success, 1 any error (bad input, bad options, failed output).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitError = 1;
+
+/// Options of commands that simulate.
+struct RunOptions
+{
+    std::string scene;
+    std::string preset = "default";
+    std::string effects;   ///< effects config file; empty: the preset
+    double seconds = 20.0; ///< simulated time, (0, 86400]
+    double hz = 60.0;      ///< step rate, [1, 10000]
+    std::uint64_t seed = 1;
+    std::string stats; ///< stats file; empty: none
+};
+
+/// Adds --seconds, --hz, --seed, --stats (and, unless `demo`, --preset and --effects) to `command`.
+void AddRunOptions(CLI::App& command, RunOptions& options, bool demo);
+
+/// Checks ranges CLI11 cannot (NaN, infinities); throws InputError naming the flag.
+void CheckRunOptions(const RunOptions& options);
+
+/// The effects configuration the options select: --effects FILE, else --preset NAME.
+EffectsConfig SelectConfig(const RunOptions& options);
+
+/// The folder of the bundled scenes: $CONTACTFX_SCENES, else the source tree's scenes/.
+std::filesystem::path ScenesDir();
+
+/// Runs `body`, turning exceptions into one error line per problem on stderr and exit code 1.
+int Guarded(const std::function<int()>& body);
+
+} // namespace cfx::cli

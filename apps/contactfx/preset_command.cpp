@@ -1,0 +1,47 @@
+#include "preset_command.h"
+
+#include "cli_common.h"
+#include "contactfx/presets.h"
+#include "contactfx/scene/effects_json.h"
+
+#include <iostream>
+#include <memory>
+
+namespace cfx::cli
+{
+
+void RegisterPresetCommand(CLI::App& app, int& result)
+{
+    struct Options
+    {
+        std::string name;
+        std::string out;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("preset", "Print a built-in effects configuration as JSON");
+    command->add_option("name", options->name, "default or tutorial")
+        ->required()
+        ->check(CLI::IsMember({"default", "tutorial"}));
+    command->add_option("--out", options->out, "Write to this file instead of standard output");
+    command->callback(
+        [options, &result]
+        {
+            result = Guarded(
+                [&]
+                {
+                    const EffectsConfig config =
+                        options->name == "tutorial" ? TutorialPreset() : DefaultPreset();
+                    if (options->out.empty())
+                    {
+                        std::cout << SaveEffectsString(config);
+                    }
+                    else
+                    {
+                        SaveEffectsFile(config, options->out);
+                    }
+                    return kExitOk;
+                });
+        });
+}
+
+} // namespace cfx::cli

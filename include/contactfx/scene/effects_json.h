@@ -1,0 +1,32 @@
+// contactfx_scene: effects configuration files.
+//
+// An effects config JSON holds an EffectsConfig: materials, particle types, pair rules, the particle
+// budget. Field names are the struct members' names (docs/effects-config.md). Missing fields take the
+// struct's defaults; unknown fields are errors (a typo must not silently do nothing). Every problem is
+// reported with file, JSON path, expected and found, and line and column for malformed JSON.
+#pragma once
+
+#include "contactfx/config.h"
+#include "contactfx/error.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cfx
+{
+
+/// Reads and validates an effects config. Throws InputError with every problem.
+EffectsConfig LoadEffectsFile(const std::filesystem::path& path);
+/// Same from text; `fileName` is used in diagnostics only.
+EffectsConfig LoadEffectsString(std::string_view json, std::string_view fileName);
+/// Every problem of the file, or an empty list; never throws for bad content.
+std::vector<Diagnostic> ValidateEffectsFile(const std::filesystem::path& path);
+
+/// The config as JSON text, every field written.
+std::string SaveEffectsString(const EffectsConfig& config);
+/// Writes atomically (temporary file, then rename). Throws InputError naming the path on failure.
+void SaveEffectsFile(const EffectsConfig& config, const std::filesystem::path& path);
+
+} // namespace cfx

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs what contactfx needs from Debian 12 (bookworm) and configures + builds it.
+# Usage: bash scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]   (as root, or with sudo available)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake ninja-build pkg-config
+  libbox2d-dev nlohmann-json3-dev libcli11-dev libcairo2-dev libglfw3-dev libimgui-dev
+  libgtest-dev libgmock-dev libbenchmark-dev ffmpeg clang xvfb xauth)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  echo "contactfx setup: installing ${missing[*]}"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build_dir="${1:-build}"
+shift || true
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$build_dir" -j"$(nproc)"

@@ -1,0 +1,49 @@
+#include "contactfx/draw.h"
+
+#include "contactfx/effects.h"
+
+#include <box2d/b2_draw.h>
+#include <box2d/b2_world.h>
+
+namespace cfx
+{
+
+void CollectSprites(const Effects& effects, std::vector<ParticleSprite>& out)
+{
+    const ParticleView view = effects.Particles();
+    const std::vector<ParticleTypeDef>& types = effects.Config().particleTypes;
+    out.resize(view.count);
+    for (std::uint32_t i = 0; i < view.count; ++i)
+    {
+        const std::uint32_t slot = view.Slot(i);
+        const ParticleTypeDef& type = types[view.type[slot]];
+        const ParticleLook look = LookAt(type, view.life[slot]);
+        ParticleSprite& sprite = out[i];
+        sprite.position = b2Vec2(view.positionX[slot], view.positionY[slot]);
+        sprite.velocity = b2Vec2(view.velocityX[slot], view.velocityY[slot]);
+        sprite.color = look.color;
+        sprite.size = look.size;
+        sprite.streak = type.streak;
+        sprite.type = ParticleTypeId{view.type[slot]};
+    }
+}
+
+void DrawEffects(const Effects& effects, b2Draw* shapes, ParticleDraw* particles,
+                 std::vector<ParticleSprite>& scratch)
+{
+    if (shapes != nullptr)
+    {
+        b2World& world = effects.World();
+        b2Draw* previous = nullptr;
+        world.SetDebugDraw(shapes);
+        world.DebugDraw();
+        world.SetDebugDraw(previous);
+    }
+    if (particles != nullptr)
+    {
+        CollectSprites(effects, scratch);
+        particles->DrawParticles(scratch);
+    }
+}
+
+} // namespace cfx

@@ -1,0 +1,616 @@
+// SaveRubeString, SaveRubeFile: the scene's current world as RUBE JSON.
+//
+// Numbers are written as plain JSON numbers that read back to the same floats (not b2dJson's hex strings).
+// Objects the scene knows are written in scene order with their names and custom properties; objects the
+// application added to the world afterwards follow in creation order; destroyed ones are left out.
+#include "contactfx/scene/rube.h"
+#include "contactfx/scene/text_file.h"
+#include "scene/custom_properties_json.h"
+#include "scene/json_writer.h"
+#include "scene/stiffness.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace cfx
+{
+
+namespace
+{
+
+using scene_detail::IndexPath;
+using scene_detail::JoinPath;
+using scene_detail::Json;
+
+class SceneWriter
+{
+public:
+    SceneWriter(const Scene& scene, scene_detail::DiagnosticList& diagnostics)
+        : m_scene(scene), m_writer(diagnostics)
+    {
+    }
+
+    Json Write();
+
+private:
+    Json Float(float value, const std::string& path) { return m_writer.Float(value, path); }
+    Json Vec(b2Vec2 value, const std::string& path) { return m_writer.Vec(value, path); }
+
+    void OrderBodies(b2World& world);
+    void OrderJoints(b2World& world);
+    std::vector<b2Fixture*> OrderFixtures(b2Body& body) const;
+
+    Json WriteBody(b2Body& body, const SceneBody* entry, const std::string& path);
+    Json WriteFixture(b2Fixture& fixture, const SceneFixture* entry, const std::string& path);
+    Json WriteShape(const b2Shape& shape, const std::string& path, std::string& key);
+    Json WriteJoint(b2Joint& joint, const SceneJoint* entry, const std::string& path);
+    void WriteJointFields(b2Joint& joint, bool rope, Json& value, const std::string& path);
+    Json WriteImage(const SceneImage& image, const std::string& path);
+
+    const Scene& m_scene;
+    scene_detail::JsonWriter m_writer;
+    std::vector<std::pair<b2Body*, const SceneBody*>> m_bodies;
+    std::unordered_map<const b2Body*, int> m_bodyIndex;
+    std::unordered_map<const b2Fixture*, const SceneFixture*> m_fixtureEntries;
+    std::vector<std::pair<b2Joint*, const SceneJoint*>> m_joints;
+    std::unordered_map<const b2Joint*, int> m_jointIndex;
+};
+
+void SceneWriter::OrderBodies(b2World& world)
+{
+    std::vector<b2Body*> listed;
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        listed.push_back(body);
+    }
+    const std::unordered_set<const b2Body*> alive(listed.begin(), listed.end());
+    std::unordered_set<const b2Body*> taken;
+    for (const SceneBody& entry : m_scene.bodies)
+    {
+        if (entry.body != nullptr && alive.count(entry.body) != 0 && taken.insert(entry.body).second)
+        {
+            m_bodies.emplace_back(entry.body, &entry);
+        }
+    }
+    // Box2D lists the newest body first.
+    for (auto it = listed.rbegin(); it != listed.rend(); ++it)
+    {
+        if (taken.insert(*it).second)
+        {
+            m_bodies.emplace_back(*it, nullptr);
+        }
+    }
+    for (std::size_t i = 0; i < m_bodies.size(); ++i)
+    {
+        m_bodyIndex[m_bodies[i].first] = static_cast<int>(i);
+    }
+}
+
+void SceneWriter::OrderJoints(b2World& world)
+{
+    std::vector<b2Joint*> listed;
+    for (b2Joint* joint = world.GetJointList(); joint != nullptr; joint = joint->GetNext())
+    {
+        listed.push_back(joint);
+    }
+    const std::unordered_set<const b2Joint*> alive(listed.begin(), listed.end());
+    std::unordered_set<const b2Joint*> taken;
+    for (const SceneJoint& entry : m_scene.joints)
+    {
+        if (entry.joint != nullptr && alive.count(entry.joint) != 0 && taken.insert(entry.joint).second)
+        {
+            m_joints.emplace_back(entry.joint, &entry);
+        }
+    }
+    for (auto it = listed.rbegin(); it != listed.rend(); ++it)
+    {
+        if (taken.insert(*it).second)
+        {
+            m_joints.emplace_back(*it, nullptr);
+        }
+    }
+    // Gear joints last, so that readers creating joints in file order find the joints a gear refers to.
+    std::stable_partition(m_joints.begin(), m_joints.end(),
+                          [](const auto& item) { return item.first->GetType() != e_gearJoint; });
+    for (std::size_t i = 0; i < m_joints.size(); ++i)
+    {
+        m_jointIndex[m_joints[i].first] = static_cast<int>(i);
+    }
+}
+
+std::vector<b2Fixture*> SceneWriter::OrderFixtures(b2Body& body) const
+{
+    std::vector<b2Fixture*> listed;
+    for (b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        listed.push_back(fixture);
+    }
+    const std::unordered_set<const b2Fixture*> alive(listed.begin(), listed.end());
+    std::unordered_set<const b2Fixture*> taken;
+    std::vector<b2Fixture*> ordered;
+    for (const SceneFixture& entry : m_scene.fixtures)
+    {
+        if (entry.fixture != nullptr && alive.count(entry.fixture) != 0 && taken.insert(entry.fixture).second)
+        {
+            ordered.push_back(entry.fixture);
+        }
+    }
+    for (auto it = listed.rbegin(); it != listed.rend(); ++it)
+    {
+        if (taken.insert(*it).second)
+        {
+            ordered.push_back(*it);
+        }
+    }
+    return ordered;
+}
+
+Json SceneWriter::Write()
+{
+    b2World& world = *m_scene.world;
+    for (const SceneFixture& entry : m_scene.fixtures)
+    {
+        m_fixtureEntries.emplace(entry.fixture, &entry);
+    }
+    OrderBodies(world);
+    OrderJoints(world);
+
+    Json root = Json::object();
+    root["gravity"] = Vec(world.GetGravity(), "gravity");
+    root["allowSleep"] = world.GetAllowSleeping();
+    root["autoClearForces"] = world.GetAutoClearForces();
+    root["warmStarting"] = world.GetWarmStarting();
+    root["continuousPhysics"] = world.GetContinuousPhysics();
+    root["subStepping"] = world.GetSubStepping();
+    root["stepsPerSecond"] = Float(m_scene.settings.stepsPerSecond, "stepsPerSecond");
+    root["velocityIterations"] = m_scene.settings.velocityIterations;
+    root["positionIterations"] = m_scene.settings.positionIterations;
+
+    Json bodies = Json::array();
+    for (std::size_t i = 0; i < m_bodies.size(); ++i)
+    {
+        bodies.push_back(WriteBody(*m_bodies[i].first, m_bodies[i].second, IndexPath("body", i)));
+    }
+    root["body"] = std::move(bodies);
+
+    Json joints = Json::array();
+    for (std::size_t i = 0; i < m_joints.size(); ++i)
+    {
+        Json joint = WriteJoint(*m_joints[i].first, m_joints[i].second, IndexPath("joint", i));
+        if (!joint.is_null())
+        {
+            joints.push_back(std::move(joint));
+        }
+    }
+    root["joint"] = std::move(joints);
+
+    Json images = Json::array();
+    for (std::size_t i = 0; i < m_scene.images.size(); ++i)
+    {
+        images.push_back(WriteImage(m_scene.images[i], IndexPath("image", i)));
+    }
+    if (!images.empty())
+    {
+        root["image"] = std::move(images);
+    }
+    Json properties = scene_detail::WriteCustomProperties(m_scene.properties, m_writer, "customProperties");
+    if (!properties.is_null())
+    {
+        root["customProperties"] = std::move(properties);
+    }
+    return root;
+}
+
+Json SceneWriter::WriteBody(b2Body& body, const SceneBody* entry, const std::string& path)
+{
+    Json value = Json::object();
+    if (entry != nullptr && !entry->name.empty())
+    {
+        value["name"] = entry->name;
+    }
+    value["type"] = static_cast<int>(body.GetType());
+    value["position"] = Vec(body.GetPosition(), JoinPath(path, "position"));
+    value["angle"] = Float(body.GetAngle(), JoinPath(path, "angle"));
+    value["linearVelocity"] = Vec(body.GetLinearVelocity(), JoinPath(path, "linearVelocity"));
+    value["angularVelocity"] = Float(body.GetAngularVelocity(), JoinPath(path, "angularVelocity"));
+    value["linearDamping"] = Float(body.GetLinearDamping(), JoinPath(path, "linearDamping"));
+    value["angularDamping"] = Float(body.GetAngularDamping(), JoinPath(path, "angularDamping"));
+    value["gravityScale"] = Float(body.GetGravityScale(), JoinPath(path, "gravityScale"));
+    value["bullet"] = body.IsBullet();
+    value["allowSleep"] = body.IsSleepingAllowed();
+    value["awake"] = body.IsAwake();
+    value["active"] = body.IsEnabled();
+    value["fixedRotation"] = body.IsFixedRotation();
+    if (body.GetType() == b2_dynamicBody && body.GetMass() > 0.0f)
+    {
+        // As b2dJson: the mass data about the body origin, applied again after the fixtures when read.
+        b2MassData massData;
+        body.GetMassData(&massData);
+        value["massData-mass"] = Float(massData.mass, JoinPath(path, "massData-mass"));
+        value["massData-center"] = Vec(massData.center, JoinPath(path, "massData-center"));
+        value["massData-I"] = Float(massData.I, JoinPath(path, "massData-I"));
+    }
+    Json fixtures = Json::array();
+    const std::vector<b2Fixture*> ordered = OrderFixtures(body);
+    for (std::size_t i = 0; i < ordered.size(); ++i)
+    {
+        auto entryIt = m_fixtureEntries.find(ordered[i]);
+        fixtures.push_back(WriteFixture(*ordered[i],
+                                        entryIt == m_fixtureEntries.end() ? nullptr : entryIt->second,
+                                        IndexPath(JoinPath(path, "fixture"), i)));
+    }
+    value["fixture"] = std::move(fixtures);
+    if (entry != nullptr)
+    {
+        Json properties = scene_detail::WriteCustomProperties(entry->properties, m_writer,
+                                                              JoinPath(path, "customProperties"));
+        if (!properties.is_null())
+        {
+            value["customProperties"] = std::move(properties);
+        }
+    }
+    return value;
+}
+
+Json SceneWriter::WriteFixture(b2Fixture& fixture, const SceneFixture* entry, const std::string& path)
+{
+    Json value = Json::object();
+    if (entry != nullptr && !entry->name.empty())
+    {
+        value["name"] = entry->name;
+    }
+    value["friction"] = Float(fixture.GetFriction(), JoinPath(path, "friction"));
+    value["restitution"] = Float(fixture.GetRestitution(), JoinPath(path, "restitution"));
+    value["density"] = Float(fixture.GetDensity(), JoinPath(path, "density"));
+    value["sensor"] = fixture.IsSensor();
+    const b2Filter& filter = fixture.GetFilterData();
+    value["filter-categoryBits"] = filter.categoryBits;
+    value["filter-maskBits"] = filter.maskBits;
+    value["filter-groupIndex"] = filter.groupIndex;
+    std::string key;
+    Json shape = WriteShape(*fixture.GetShape(), path, key);
+    value[key] = std::move(shape);
+    if (entry != nullptr)
+    {
+        Json properties = scene_detail::WriteCustomProperties(entry->properties, m_writer,
+                                                              JoinPath(path, "customProperties"));
+        if (!properties.is_null())
+        {
+            value["customProperties"] = std::move(properties);
+        }
+    }
+    return value;
+}
+
+Json SceneWriter::WriteShape(const b2Shape& shape, const std::string& fixturePath, std::string& key)
+{
+    Json value = Json::object();
+    switch (shape.GetType())
+    {
+    case b2Shape::e_circle:
+    {
+        key = "circle";
+        const std::string path = JoinPath(fixturePath, key);
+        const auto& circle = static_cast<const b2CircleShape&>(shape);
+        value["radius"] = Float(circle.m_radius, JoinPath(path, "radius"));
+        value["center"] = Vec(circle.m_p, JoinPath(path, "center"));
+        break;
+    }
+    case b2Shape::e_polygon:
+    {
+        key = "polygon";
+        const auto& polygon = static_cast<const b2PolygonShape&>(shape);
+        value["vertices"] = m_writer.VertexList(
+            std::span<const b2Vec2>(polygon.m_vertices, static_cast<std::size_t>(polygon.m_count)),
+            JoinPath(JoinPath(fixturePath, key), "vertices"));
+        break;
+    }
+    case b2Shape::e_edge:
+    {
+        key = "edge";
+        const std::string path = JoinPath(fixturePath, key);
+        const auto& edge = static_cast<const b2EdgeShape&>(shape);
+        value["vertex1"] = Vec(edge.m_vertex1, JoinPath(path, "vertex1"));
+        value["vertex2"] = Vec(edge.m_vertex2, JoinPath(path, "vertex2"));
+        if (edge.m_oneSided)
+        {
+            value["hasVertex0"] = true;
+            value["hasVertex3"] = true;
+            value["vertex0"] = Vec(edge.m_vertex0, JoinPath(path, "vertex0"));
+            value["vertex3"] = Vec(edge.m_vertex3, JoinPath(path, "vertex3"));
+        }
+        break;
+    }
+    case b2Shape::e_chain:
+    {
+        key = "chain";
+        const std::string path = JoinPath(fixturePath, key);
+        const auto& chain = static_cast<const b2ChainShape&>(shape);
+        // A loop keeps its closing vertex; with the ghost vertices it reads back as the same chain.
+        value["vertices"] = m_writer.VertexList(
+            std::span<const b2Vec2>(chain.m_vertices, static_cast<std::size_t>(chain.m_count)),
+            JoinPath(path, "vertices"));
+        value["hasPrevVertex"] = true;
+        value["hasNextVertex"] = true;
+        value["prevVertex"] = Vec(chain.m_prevVertex, JoinPath(path, "prevVertex"));
+        value["nextVertex"] = Vec(chain.m_nextVertex, JoinPath(path, "nextVertex"));
+        break;
+    }
+    default:
+        key = "circle";
+        break;
+    }
+    return value;
+}
+
+Json SceneWriter::WriteJoint(b2Joint& joint, const SceneJoint* entry, const std::string& path)
+{
+    const bool rope = entry != nullptr && entry->type == "rope" && joint.GetType() == e_distanceJoint;
+    static const std::unordered_map<int, const char*> kNames = {
+        {e_revoluteJoint, "revolute"}, {e_prismaticJoint, "prismatic"}, {e_distanceJoint, "distance"},
+        {e_pulleyJoint, "pulley"},     {e_mouseJoint, "mouse"},         {e_gearJoint, "gear"},
+        {e_wheelJoint, "wheel"},       {e_weldJoint, "weld"},           {e_frictionJoint, "friction"},
+        {e_motorJoint, "motor"},
+    };
+    auto name = kNames.find(joint.GetType());
+    if (name == kNames.end())
+    {
+        return nullptr;
+    }
+    Json value = Json::object();
+    value["type"] = rope ? "rope" : name->second;
+    if (entry != nullptr && !entry->name.empty())
+    {
+        value["name"] = entry->name;
+    }
+    value["bodyA"] = m_bodyIndex.at(joint.GetBodyA());
+    value["bodyB"] = m_bodyIndex.at(joint.GetBodyB());
+    value["collideConnected"] = joint.GetCollideConnected();
+    WriteJointFields(joint, rope, value, path);
+    if (value.is_null())
+    {
+        return nullptr;
+    }
+    if (entry != nullptr)
+    {
+        Json properties = scene_detail::WriteCustomProperties(entry->properties, m_writer,
+                                                              JoinPath(path, "customProperties"));
+        if (!properties.is_null())
+        {
+            value["customProperties"] = std::move(properties);
+        }
+    }
+    return value;
+}
+
+void SceneWriter::WriteJointFields(b2Joint& joint, bool rope, Json& value, const std::string& path)
+{
+    auto field = [&](const char* key, float number) { value[key] = Float(number, JoinPath(path, key)); };
+    auto vec = [&](const char* key, b2Vec2 v) { value[key] = Vec(v, JoinPath(path, key)); };
+    auto spring =
+        [&](const char* frequencyKey, const char* ratioKey, float stiffness, float damping, float mass)
+    {
+        const scene_detail::Spring converted = scene_detail::SpringFromStiffness(stiffness, damping, mass);
+        field(frequencyKey, converted.frequency);
+        field(ratioKey, converted.dampingRatio);
+    };
+    b2Body& bodyA = *joint.GetBodyA();
+    b2Body& bodyB = *joint.GetBodyB();
+    switch (joint.GetType())
+    {
+    case e_revoluteJoint:
+    {
+        auto& revolute = static_cast<b2RevoluteJoint&>(joint);
+        vec("anchorA", revolute.GetLocalAnchorA());
+        vec("anchorB", revolute.GetLocalAnchorB());
+        field("refAngle", revolute.GetReferenceAngle());
+        value["enableLimit"] = revolute.IsLimitEnabled();
+        field("lowerLimit", revolute.GetLowerLimit());
+        field("upperLimit", revolute.GetUpperLimit());
+        value["enableMotor"] = revolute.IsMotorEnabled();
+        field("motorSpeed", revolute.GetMotorSpeed());
+        field("maxMotorTorque", revolute.GetMaxMotorTorque());
+        break;
+    }
+    case e_prismaticJoint:
+    {
+        auto& prismatic = static_cast<b2PrismaticJoint&>(joint);
+        vec("anchorA", prismatic.GetLocalAnchorA());
+        vec("anchorB", prismatic.GetLocalAnchorB());
+        vec("localAxisA", prismatic.GetLocalAxisA());
+        field("refAngle", prismatic.GetReferenceAngle());
+        value["enableLimit"] = prismatic.IsLimitEnabled();
+        field("lowerLimit", prismatic.GetLowerLimit());
+        field("upperLimit", prismatic.GetUpperLimit());
+        value["enableMotor"] = prismatic.IsMotorEnabled();
+        field("motorSpeed", prismatic.GetMotorSpeed());
+        field("maxMotorForce", prismatic.GetMaxMotorForce());
+        break;
+    }
+    case e_distanceJoint:
+    {
+        auto& distance = static_cast<b2DistanceJoint&>(joint);
+        vec("anchorA", distance.GetLocalAnchorA());
+        vec("anchorB", distance.GetLocalAnchorB());
+        if (rope)
+        {
+            field("maxLength", distance.GetMaxLength());
+            break;
+        }
+        field("length", distance.GetLength());
+        spring("frequency", "dampingRatio", distance.GetStiffness(), distance.GetDamping(),
+               scene_detail::LinearSpringMass(bodyA, bodyB));
+        // Box2D 2.4 fields RUBE does not have.
+        field("minLength", distance.GetMinLength());
+        field("maxLength", distance.GetMaxLength());
+        break;
+    }
+    case e_pulleyJoint:
+    {
+        auto& pulley = static_cast<b2PulleyJoint&>(joint);
+        vec("groundAnchorA", pulley.GetGroundAnchorA());
+        vec("groundAnchorB", pulley.GetGroundAnchorB());
+        vec("anchorA", bodyA.GetLocalPoint(pulley.GetAnchorA()));
+        vec("anchorB", bodyB.GetLocalPoint(pulley.GetAnchorB()));
+        field("lengthA", pulley.GetLengthA());
+        field("lengthB", pulley.GetLengthB());
+        field("ratio", pulley.GetRatio());
+        break;
+    }
+    case e_mouseJoint:
+    {
+        auto& mouse = static_cast<b2MouseJoint&>(joint);
+        vec("target", mouse.GetTarget());
+        vec("anchorB", mouse.GetAnchorB());
+        field("maxForce", mouse.GetMaxForce());
+        spring("frequency", "dampingRatio", mouse.GetStiffness(), mouse.GetDamping(),
+               scene_detail::LinearSpringMass(bodyA, bodyB));
+        break;
+    }
+    case e_gearJoint:
+    {
+        auto& gear = static_cast<b2GearJoint&>(joint);
+        auto joint1 = m_jointIndex.find(gear.GetJoint1());
+        auto joint2 = m_jointIndex.find(gear.GetJoint2());
+        if (joint1 == m_jointIndex.end() || joint2 == m_jointIndex.end())
+        {
+            value = nullptr; // refers to a joint that no longer exists
+            return;
+        }
+        value["joint1"] = joint1->second;
+        value["joint2"] = joint2->second;
+        field("ratio", gear.GetRatio());
+        break;
+    }
+    case e_wheelJoint:
+    {
+        auto& wheel = static_cast<b2WheelJoint&>(joint);
+        vec("anchorA", wheel.GetLocalAnchorA());
+        vec("anchorB", wheel.GetLocalAnchorB());
+        vec("localAxisA", wheel.GetLocalAxisA());
+        value["enableMotor"] = wheel.IsMotorEnabled();
+        field("motorSpeed", wheel.GetMotorSpeed());
+        field("maxMotorTorque", wheel.GetMaxMotorTorque());
+        spring("springFrequency", "springDampingRatio", wheel.GetStiffness(), wheel.GetDamping(),
+               scene_detail::LinearSpringMass(bodyA, bodyB));
+        // Box2D 2.4 fields RUBE does not have.
+        value["enableLimit"] = wheel.IsLimitEnabled();
+        field("lowerLimit", wheel.GetLowerLimit());
+        field("upperLimit", wheel.GetUpperLimit());
+        break;
+    }
+    case e_weldJoint:
+    {
+        auto& weld = static_cast<b2WeldJoint&>(joint);
+        vec("anchorA", weld.GetLocalAnchorA());
+        vec("anchorB", weld.GetLocalAnchorB());
+        field("refAngle", weld.GetReferenceAngle());
+        spring("frequency", "dampingRatio", weld.GetStiffness(), weld.GetDamping(),
+               scene_detail::AngularSpringInertia(bodyA, bodyB));
+        break;
+    }
+    case e_frictionJoint:
+    {
+        auto& friction = static_cast<b2FrictionJoint&>(joint);
+        vec("anchorA", friction.GetLocalAnchorA());
+        vec("anchorB", friction.GetLocalAnchorB());
+        field("maxForce", friction.GetMaxForce());
+        field("maxTorque", friction.GetMaxTorque());
+        break;
+    }
+    case e_motorJoint:
+    {
+        auto& motor = static_cast<b2MotorJoint&>(joint);
+        vec("linearOffset", motor.GetLinearOffset());
+        field("refAngle", motor.GetAngularOffset());
+        field("maxForce", motor.GetMaxForce());
+        field("maxTorque", motor.GetMaxTorque());
+        field("correctionFactor", motor.GetCorrectionFactor());
+        break;
+    }
+    default:
+        value = nullptr;
+        break;
+    }
+}
+
+Json SceneWriter::WriteImage(const SceneImage& image, const std::string& path)
+{
+    Json value = Json::object();
+    int body = -1;
+    if (image.bodyIndex >= 0 && static_cast<std::size_t>(image.bodyIndex) < m_scene.bodies.size())
+    {
+        auto it = m_bodyIndex.find(m_scene.bodies[static_cast<std::size_t>(image.bodyIndex)].body);
+        body = it == m_bodyIndex.end() ? -1 : it->second;
+    }
+    value["body"] = body;
+    if (!image.name.empty())
+    {
+        value["name"] = image.name;
+    }
+    value["file"] = image.file;
+    value["center"] = Vec(image.center, JoinPath(path, "center"));
+    value["angle"] = Float(image.angle, JoinPath(path, "angle"));
+    value["scale"] = Float(image.scale, JoinPath(path, "scale"));
+    value["aspectScale"] = Float(image.aspectScale, JoinPath(path, "aspectScale"));
+    value["flip"] = image.flip;
+    value["opacity"] = Float(image.opacity, JoinPath(path, "opacity"));
+    value["filter"] = image.filter;
+    value["renderOrder"] = Float(image.renderOrder, JoinPath(path, "renderOrder"));
+    Json tint = Json::array();
+    for (float channel : image.colorTint)
+    {
+        tint.push_back(static_cast<int>(std::lround(std::clamp(channel, 0.0f, 1.0f) * 255.0f)));
+    }
+    value["colorTint"] = std::move(tint);
+    value["corners"] = m_writer.VertexList(image.corners, JoinPath(path, "corners"));
+    Json vertexPointer = Json::array();
+    for (std::size_t i = 0; i < image.corners.size(); ++i)
+    {
+        vertexPointer.push_back(Float(image.corners[i].x, JoinPath(path, "corners")));
+        vertexPointer.push_back(Float(image.corners[i].y, JoinPath(path, "corners")));
+    }
+    value["glVertexPointer"] = std::move(vertexPointer);
+    Json uv = Json::array();
+    for (std::size_t i = 0; i < image.uvCoords.size(); ++i)
+    {
+        uv.push_back(Float(image.uvCoords[i].x, IndexPath(JoinPath(path, "glTexCoordPointer"), 2 * i)));
+        uv.push_back(Float(image.uvCoords[i].y, IndexPath(JoinPath(path, "glTexCoordPointer"), 2 * i + 1)));
+    }
+    value["glTexCoordPointer"] = std::move(uv);
+    value["glDrawElements"] = image.glDrawElements;
+    Json properties =
+        scene_detail::WriteCustomProperties(image.properties, m_writer, JoinPath(path, "customProperties"));
+    if (!properties.is_null())
+    {
+        value["customProperties"] = std::move(properties);
+    }
+    return value;
+}
+
+} // namespace
+
+std::string SaveRubeString(const Scene& scene)
+{
+    if (!scene.world)
+    {
+        throw InputError("<api>", "world", "expected a scene with a world, found none");
+    }
+    scene_detail::DiagnosticList diagnostics("<api>");
+    SceneWriter writer(scene, diagnostics);
+    Json root = writer.Write();
+    if (!diagnostics.Empty())
+    {
+        throw InputError(diagnostics.Take());
+    }
+    return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+void SaveRubeFile(const Scene& scene, const std::filesystem::path& path)
+{
+    WriteTextFileAtomically(path, SaveRubeString(scene));
+}
+
+} // namespace cfx

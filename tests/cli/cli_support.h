@@ -1,0 +1,58 @@
+// Running the contactfx binary from tests.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <sys/wait.h>
+
+namespace cfx::test
+{
+
+struct CliResult
+{
+    int exitCode = -1;
+    std::string output; ///< stdout and stderr together
+};
+
+/// Runs `contactfx ARGS` (ARGS as shell words) and captures its output.
+inline CliResult RunCli(const std::string& args)
+{
+    const std::string command = std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx " + args + " 2>&1";
+    CliResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr)
+    {
+        return result;
+    }
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr)
+    {
+        result.output += buffer.data();
+    }
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+/// A fresh scratch folder for one test.
+inline std::filesystem::path ScratchDir(const std::string& name)
+{
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("contactfx_test_" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline std::string Scene(const char* name)
+{
+    return std::string(CONTACTFX_SOURCE_DIR) + "/scenes/" + name;
+}
+
+inline std::string Sample(const char* name)
+{
+    return std::string(CONTACTFX_SHARED_DIR) + "/rube-samples/" + name;
+}
+
+} // namespace cfx::test

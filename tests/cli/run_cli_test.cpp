@@ -1,0 +1,142 @@
+#include "cli/cli_support.h"
+
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+std::string Slurp(const std::filesystem::path& path)
+{
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void WriteFile(const std::filesystem::path& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
+
+// A failing command: exit 1, one line naming `expected` (file and field), no stats file.
+void ExpectRefused(const std::string& args, const std::filesystem::path& stats,
+                   const std::vector<std::string>& expected)
+{
+    CliResult result = RunCli(args + " --stats " + stats.string());
+    EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.output;
+    for (const std::string& word : expected)
+    {
+        EXPECT_NE(result.output.find(word), std::string::npos)
+            << "'" << word << "' missing in: " << result.output;
+    }
+    EXPECT_EQ(result.output.find("terminate"), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(stats)) << "stats written by a failed run: " << args;
+}
+
+} // namespace
+
+TEST(CliRun, DemoPrintsASummaryAndWritesStats)
+{
+    std::filesystem::path dir = ScratchDir("demo");
+    CliResult result = RunCli("demo --seconds 3 --stats " + (dir / "stats.json").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("spawned:"), std::string::npos);
+    nlohmann::json stats = nlohmann::json::parse(Slurp(dir / "stats.json"));
+    EXPECT_EQ(stats["steps"], 180);
+    EXPECT_EQ(stats["hz"], 60.0);
+    EXPECT_EQ(stats["seconds"], 3.0);
+    for (const char* type : {"smoke", "sparks", "dirt"})
+    {
+        EXPECT_TRUE(stats["spawned"].contains(type)) << type;
+    }
+    for (const char* rule : {"concrete+steel", "concrete+rubber", "dirt+steel", "dirt+rubber"})
+    {
+        ASSERT_TRUE(stats["rules"].contains(rule)) << rule;
+        EXPECT_TRUE(stats["rules"][rule].contains("contacts_max"));
+        EXPECT_TRUE(stats["rules"][rule].contains("spawned"));
+    }
+    EXPECT_TRUE(stats.contains("live_max"));
+    EXPECT_EQ(stats["spawned_inside_solid"], 0);
+}
+
+TEST(CliRun, SameCommandTwiceWritesByteIdenticalStats)
+{
+    std::filesystem::path dir = ScratchDir("determinism");
+    const std::string args =
+        "run " + Scene("physics_driven_particles.json") + " --seconds 4 --seed 9 --stats ";
+    ASSERT_EQ(RunCli(args + (dir / "a.json").string()).exitCode, 0);
+    ASSERT_EQ(RunCli(args + (dir / "b.json").string()).exitCode, 0);
+    EXPECT_EQ(Slurp(dir / "a.json"), Slurp(dir / "b.json"));
+    ASSERT_EQ(RunCli("demo --seconds 4 --seed 3 --stats " + (dir / "c.json").string()).exitCode, 0);
+    ASSERT_EQ(RunCli("demo --seconds 4 --seed 3 --stats " + (dir / "d.json").string()).exitCode, 0);
+    EXPECT_EQ(Slurp(dir / "c.json"), Slurp(dir / "d.json"));
+}
+
+TEST(CliRun, TutorialPresetKeepsAtMostHundredParticles)
+{
+    std::filesystem::path dir = ScratchDir("tutorial");
+    CliResult result = RunCli("run " + Scene("physics_driven_particles.json") +
+                              " --preset tutorial --seconds 2 --stats " + (dir / "s.json").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    nlohmann::json stats = nlohmann::json::parse(Slurp(dir / "s.json"));
+    EXPECT_LE(stats["live_max"].get<int>(), 100);
+}
+
+TEST(CliRun, RunsAnyRubeSceneWithEffectsConfig)
+{
+    std::filesystem::path dir = ScratchDir("any");
+    CliResult result = RunCli("run " + Sample("car.json") + " --seconds 1 --effects " +
+                              Scene("default.effects.json") + " --stats " + (dir / "s.json").string());
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "s.json"));
+}
+
+TEST(CliRun, BadInputIsRefusedWithFileAndField)
+{
+    std::filesystem::path dir = ScratchDir("bad");
+    const std::filesystem::path stats = dir / "stats.json";
+    const std::string tutorial = Scene("physics_driven_particles.json");
+
+    ExpectRefused("run " + (dir / "missing.json").string(), stats, {"missing.json"});
+    WriteFile(dir / "truncated.json", "{\"gravity\": {\"x\": 0, \"y\": -10}, \"body\": [");
+    ExpectRefused("run " + (dir / "truncated.json").string(), stats, {"truncated.json:1:"});
+    WriteFile(dir / "wrongtype.json", R"({"body": [{"type": 2, "position": {"x": "abc", "y": 0}}]})");
+    ExpectRefused("run " + (dir / "wrongtype.json").string(), stats,
+                  {"wrongtype.json", "body[0].position.x"});
+
+    std::ifstream in(tutorial);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string glass = text.str();
+    glass.replace(glass.find("\"string\": \"steel\""), 17, "\"string\": \"glass\"");
+    WriteFile(dir / "glass.json", glass);
+    ExpectRefused("run " + (dir / "glass.json").string(), stats, {"glass.json", "customProperties", "glass"});
+
+    ExpectRefused("run " + tutorial + " --seconds abc", stats, {"--seconds"});
+    ExpectRefused("run " + tutorial + " --seconds nan", stats, {"--seconds"});
+    ExpectRefused("run " + tutorial + " --seconds -2", stats, {"--seconds"});
+    ExpectRefused("run " + tutorial + " --hz 0", stats, {"--hz"});
+    ExpectRefused("run " + tutorial + " --hz inf", stats, {"--hz"});
+    ExpectRefused("demo --seed -1", stats, {"--seed"});
+    ExpectRefused("run " + tutorial + " --preset fancy", stats, {"--preset"});
+
+    WriteFile(dir / "negative.effects.json",
+              R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "radius": -0.5}]})");
+    ExpectRefused("run " + tutorial + " --effects " + (dir / "negative.effects.json").string(), stats,
+                  {"negative.effects.json", "particleTypes[0].radius"});
+    WriteFile(dir / "nan.effects.json", R"({"particleTypes": [{"name": "sparks", "drag": "NaN"}]})");
+    ExpectRefused("run " + tutorial + " --effects " + (dir / "nan.effects.json").string(), stats,
+                  {"nan.effects.json", "particleTypes[0].drag"});
+    WriteFile(dir / "unknown.effects.json", R"({"materials": ["steel"], "particleTypes": [{"name": "sparks"}],
+        "rules": [{"materialA": "steel", "materialB": "wood", "particleType": "sparks"}]})");
+    ExpectRefused("run " + tutorial + " --effects " + (dir / "unknown.effects.json").string(), stats,
+                  {"unknown.effects.json", "rules[0].materialB", "wood"});
+}
+
+} // namespace cfx::test
