@@ -145,6 +145,10 @@ void CheckRule(Checker& check, const std::string& at, const RuleDef& rule, const
     check.NonNegative(at + ".ratePerIntensity", rule.ratePerIntensity);
     check.NonNegative(at + ".maxRate", rule.maxRate);
     check.Enum(at + ".placement", static_cast<int>(rule.placement), 2);
+    check.NonNegative(at + ".scrapeEndDelay", rule.scrapeEndDelay);
+    check.NonNegative(at + ".impactThreshold", rule.impactThreshold);
+    check.NonNegative(at + ".burstPerSpeed", rule.burstPerSpeed);
+    check.NonNegative(at + ".burstMax", rule.burstMax);
 }
 
 } // namespace

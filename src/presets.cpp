@@ -166,10 +166,15 @@ EffectsConfig DefaultPreset()
         rule.placement = SpawnPlacement::surface;
         return rule;
     };
+    // Hard hits burst: sparks from steel on concrete, dirt from anything landing on dirt.
     config.rules = {withModel(Rule("steel", "concrete", "sparks"), 1.0f, 80.0f, 800.0f),
                     withModel(Rule("rubber", "concrete", "smoke"), 1.5f, 30.0f, 250.0f),
                     withModel(Rule("steel", "dirt", "dirt"), 0.5f, 40.0f, 300.0f),
                     withModel(Rule("rubber", "dirt", "dirt"), 0.5f, 40.0f, 300.0f)};
+    config.rules[0].burstPerSpeed = 6.0f;
+    config.rules[0].burstMax = 40.0f;
+    config.rules[2].burstPerSpeed = 4.0f;
+    config.rules[3].burstPerSpeed = 2.0f;
     config.budget = ParticleBudget{8192, RecyclePolicy::oldest};
     return config;
 }

@@ -55,6 +55,16 @@ struct RuleDef
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 
+    // Events (events.h) and impact bursts.
+    /// A scrape ends after its intensity has stayed at or below the threshold this long, s, >= 0.
+    float scrapeEndDelay = 0.1f;
+    /// Approach speed along the normal at first touch that makes an impact event, m/s, >= 0.
+    float impactThreshold = 2.0f;
+    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold, >= 0.
+    float burstPerSpeed = 0.0f;
+    /// Most particles one impact bursts, >= 0.
+    float burstMax = 50.0f;
+
     bool operator==(const RuleDef&) const = default;
 };
 

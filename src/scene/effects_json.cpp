@@ -88,6 +88,10 @@ const std::array kRuleFields{
     Field<RuleDef>{"threshold", &RuleDef::threshold},
     Field<RuleDef>{"ratePerIntensity", &RuleDef::ratePerIntensity},
     Field<RuleDef>{"maxRate", &RuleDef::maxRate},
+    Field<RuleDef>{"scrapeEndDelay", &RuleDef::scrapeEndDelay},
+    Field<RuleDef>{"impactThreshold", &RuleDef::impactThreshold},
+    Field<RuleDef>{"burstPerSpeed", &RuleDef::burstPerSpeed},
+    Field<RuleDef>{"burstMax", &RuleDef::burstMax},
 };
 
 const std::array kIntensityFields{
