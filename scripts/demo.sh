@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run the tutorial scene headless with contactfx's default effects.
+# The main job: set up, build, run the tutorial scene headless with contactfx's default effects, and
+# render it to a video (sparks, smoke and dirt) plus a plot of where each effect starts and stops.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh build
 mkdir -p out
-./build/bin/contactfx demo --seconds 20 --stats out/demo-stats.json
+./build/bin/contactfx demo --seconds 20 --stats out/demo-stats.json --plot out/demo-plot.png
 echo "statistics: out/demo-stats.json"
+echo "tuning plot: out/demo-plot.png"
+./build/bin/contactfx render --demo --seconds 20 --out out/demo.mp4
+echo "video: out/demo.mp4"

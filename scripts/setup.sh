@@ -5,8 +5,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
-  libbox2d-dev nlohmann-json3-dev libcli11-dev libcairo2-dev libglfw3-dev libimgui-dev
-  libgtest-dev libgmock-dev libbenchmark-dev ffmpeg clang xvfb xauth)
+  libbox2d-dev nlohmann-json3-dev libcli11-dev libcairo2-dev fonts-dejavu-core libglfw3-dev libimgui-dev
+  libgtest-dev libgmock-dev libbenchmark-dev ffmpeg clang libclang-rt-14-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,6 +1,7 @@
 #include "contactfx/config.h"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -151,6 +152,47 @@ void CheckRule(Checker& check, const std::string& at, const RuleDef& rule, const
     check.NonNegative(at + ".burstMax", rule.burstMax);
 }
 
+// Both bounds finite and, when both are set, a non-empty open interval.
+void CheckRange(Checker& check, const std::string& at, const char* aboveKey,
+                const std::optional<float>& above, const char* belowKey, const std::optional<float>& below)
+{
+    if (above)
+    {
+        check.Finite(at + "." + aboveKey, *above);
+    }
+    if (below)
+    {
+        check.Finite(at + "." + belowKey, *below);
+    }
+    if (above && below && std::isfinite(*above) && std::isfinite(*below) && !(*below > *above))
+    {
+        std::ostringstream text;
+        text << "expected a number > " << aboveKey << " (" << *above << "), found " << *below
+             << " (no value would match)";
+        check.Fail(at + "." + belowKey, text.str());
+    }
+}
+
+void CheckAssignment(Checker& check, const std::string& at, const MaterialAssignment& rule,
+                     const EffectsConfig& config)
+{
+    if (!config.FindMaterial(rule.material).IsValid())
+    {
+        check.Fail(at + ".material", "unknown material \"" + rule.material + "\"");
+    }
+    if (rule.bodyName.empty())
+    {
+        check.Fail(at + ".bodyName", "expected a non-empty pattern (\"*\" matches any name)");
+    }
+    if (rule.fixtureName.empty())
+    {
+        check.Fail(at + ".fixtureName", "expected a non-empty pattern (\"*\" matches any name)");
+    }
+    check.Enum(at + ".bodyType", static_cast<int>(rule.bodyType), 4);
+    CheckRange(check, at, "frictionAbove", rule.frictionAbove, "frictionBelow", rule.frictionBelow);
+    CheckRange(check, at, "massAbove", rule.massAbove, "massBelow", rule.massBelow);
+}
+
 } // namespace
 
 std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view file)
@@ -219,12 +261,17 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         }
     }
 
+    for (std::size_t i = 0; i < config.assignments.size(); ++i)
+    {
+        CheckAssignment(check, "assignments[" + std::to_string(i) + "]", config.assignments[i], config);
+    }
+
     if (config.budget.capacity < 1 || config.budget.capacity > 4000000)
     {
         check.Fail("budget.capacity",
                    "expected a number in [1, 4000000], found " + std::to_string(config.budget.capacity));
     }
-    check.Enum("budget.recycle", static_cast<int>(config.budget.recycle), 1);
+    check.Enum("budget.recycle", static_cast<int>(config.budget.recycle), 2);
     return out;
 }
 

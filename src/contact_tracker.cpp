@@ -1,6 +1,8 @@
 #include "contactfx/contact_tracker.h"
 
 #include <algorithm>
+#include <box2d/b2_body.h>
+#include <box2d/b2_collision.h>
 #include <box2d/b2_contact.h>
 #include <box2d/b2_fixture.h>
 
@@ -37,7 +39,7 @@ ContactTracker::ContactTracker(const RuleTable& rules, const FixtureMaterials& m
 {
 }
 
-void ContactTracker::Track(b2Contact* contact)
+void ContactTracker::Track(b2Contact* contact, bool firstTouch)
 {
     if (IsTracked(contact) || !IsSolid(contact))
     {
@@ -57,11 +59,15 @@ void ContactTracker::Track(b2Contact* contact)
     tracked.swapped = m_rules.FirstMaterial(rule) != materialA;
     tracked.id = m_nextId++;
     tracked.beganStep = m_step;
+    if (firstTouch)
+    {
+        RecordApproach(contact, tracked);
+    }
     m_index.Set(contact, Pack(rule, list.size()));
     list.push_back(tracked);
 }
 
-void ContactTracker::Untrack(b2Contact* contact)
+void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
 {
     std::uint64_t* value = m_index.Find(contact);
     if (value == nullptr)
@@ -70,6 +76,10 @@ void ContactTracker::Untrack(b2Contact* contact)
     }
     std::vector<TrackedContact>& list = m_byRule[UnpackRule(*value).index];
     std::size_t slot = UnpackSlot(*value);
+    if (list[slot].scrapeId != 0)
+    {
+        m_endedScrapes.push_back(EndScrape(list[slot], reason));
+    }
     m_index.Erase(contact);
     if (slot + 1 != list.size())
     {
@@ -88,7 +98,7 @@ void ContactTracker::Prune()
             b2Contact* contact = list[i].contact;
             if (!IsSolid(contact) || !contact->IsTouching())
             {
-                Untrack(contact);
+                Untrack(contact, ScrapeEnd::contactEnded);
             }
         }
     }
@@ -116,15 +126,83 @@ void ContactTracker::ForgetFixture(const b2Fixture* fixture)
             b2Contact* contact = list[i].contact;
             if (contact->GetFixtureA() == fixture || contact->GetFixtureB() == fixture)
             {
-                Untrack(contact);
+                Untrack(contact, ScrapeEnd::destroyed);
             }
         }
     }
 }
 
+void ContactTracker::MarkDestroyed(const b2Fixture* fixture)
+{
+    for (EffectEvent& ended : m_endedScrapes)
+    {
+        if (ended.fixtureA == fixture || ended.fixtureB == fixture)
+        {
+            ended.end = ScrapeEnd::destroyed;
+        }
+    }
+}
+
+const b2Fixture* ContactTracker::RuleFixtureA(const TrackedContact& tracked) const
+{
+    return tracked.swapped ? tracked.contact->GetFixtureB() : tracked.contact->GetFixtureA();
+}
+
+const b2Fixture* ContactTracker::RuleFixtureB(const TrackedContact& tracked) const
+{
+    return tracked.swapped ? tracked.contact->GetFixtureA() : tracked.contact->GetFixtureB();
+}
+
+EffectEvent ContactTracker::EndScrape(TrackedContact& tracked, ScrapeEnd reason) const
+{
+    EffectEvent event;
+    event.type = EffectEventType::scrapeEnded;
+    event.end = reason;
+    event.rule = tracked.rule;
+    event.fixtureA = RuleFixtureA(tracked);
+    event.fixtureB = RuleFixtureB(tracked);
+    event.materialA = m_materials.Get(event.fixtureA);
+    event.materialB = m_materials.Get(event.fixtureB);
+    event.id = tracked.scrapeId;
+    event.step = m_step;
+    event.point = tracked.scrapePoint;
+    event.normal = tracked.scrapeNormal;
+    tracked.scrapeId = 0;
+    tracked.quietTime = 0.0f;
+    return event;
+}
+
+void ContactTracker::RecordApproach(b2Contact* contact, TrackedContact& tracked)
+{
+    const b2Manifold* manifold = contact->GetManifold();
+    if (manifold->pointCount < 1)
+    {
+        return;
+    }
+    b2WorldManifold world;
+    contact->GetWorldManifold(&world);
+    const b2Body* bodyA = contact->GetFixtureA()->GetBody();
+    const b2Body* bodyB = contact->GetFixtureB()->GetBody();
+    tracked.impactPending = true;
+    tracked.approachNormal = world.normal;
+    tracked.approachSpeed = -1.0f;
+    for (int i = 0; i < manifold->pointCount; ++i)
+    {
+        const b2Vec2 relative = bodyA->GetLinearVelocityFromWorldPoint(world.points[i]) -
+                                bodyB->GetLinearVelocityFromWorldPoint(world.points[i]);
+        const float approach = b2Dot(relative, world.normal); // > 0: A moves toward B
+        if (approach > tracked.approachSpeed)
+        {
+            tracked.approachSpeed = approach;
+            tracked.approachPoint = world.points[i];
+        }
+    }
+    tracked.approachSpeed = std::max(tracked.approachSpeed, 0.0f);
+}
+
 void ContactTracker::BeginContact(b2Contact* contact)
 {
-    Track(contact);
+    Track(contact, true);
     if (m_forward != nullptr)
     {
         m_forward->BeginContact(contact);
@@ -133,7 +211,7 @@ void ContactTracker::BeginContact(b2Contact* contact)
 
 void ContactTracker::EndContact(b2Contact* contact)
 {
-    Untrack(contact);
+    Untrack(contact, ScrapeEnd::contactEnded);
     if (m_forward != nullptr)
     {
         m_forward->EndContact(contact);
@@ -144,7 +222,7 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
 {
     // Box2D calls PreSolve only for touching, non-sensor contacts: a fixture that stopped being a
     // sensor while touching comes back into tracking here, since no new BeginContact will come.
-    Track(contact);
+    Track(contact, false);
     if (m_forward != nullptr)
     {
         m_forward->PreSolve(contact, oldManifold);

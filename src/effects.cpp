@@ -39,8 +39,8 @@ RuleTable BuildRuleTable(const EffectsConfig& config)
 class Effects::Destruction final : public b2DestructionListener
 {
 public:
-    Destruction(FixtureMaterials& materials, b2DestructionListener* application)
-        : m_materials(materials), forward(application)
+    Destruction(FixtureMaterials& materials, ContactTracker& tracker, b2DestructionListener* application)
+        : m_materials(materials), m_tracker(tracker), forward(application)
     {
     }
 
@@ -54,6 +54,8 @@ public:
 
     void SayGoodbye(b2Fixture* fixture) override
     {
+        // Box2D ended the fixture's contacts just before: their scrapes ended by destruction.
+        m_tracker.MarkDestroyed(fixture);
         m_materials.Erase(fixture);
         if (forward != nullptr)
         {
@@ -63,6 +65,7 @@ public:
 
 private:
     FixtureMaterials& m_materials;
+    ContactTracker& m_tracker;
 
 public:
     b2DestructionListener* forward;
@@ -71,8 +74,8 @@ public:
 Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
       m_tracker(m_rules, m_materials), m_particles(world, m_config.particleTypes, m_config.budget),
-      m_destruction(std::make_unique<Destruction>(m_materials, def.destructionListener)),
-      m_emitter(std::make_unique<detail::Emitter>(def.seed))
+      m_destruction(std::make_unique<Destruction>(m_materials, m_tracker, def.destructionListener)),
+      m_emitter(std::make_unique<detail::Emitter>(def.seed)), m_eventListener(def.eventListener)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});
@@ -114,7 +117,9 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 void Effects::Step(float dt)
 {
     m_tracker.Prune();
-    m_emitter->Emit(m_world, m_config, m_tracker, m_particles, m_stats, dt);
+    m_events.assign(m_tracker.EndedScrapes().begin(), m_tracker.EndedScrapes().end());
+    m_tracker.ClearEndedScrapes();
+    m_emitter->Emit(m_world, m_config, m_tracker, m_particles, m_stats, m_events, dt);
     m_particles.Step(dt, m_world.GetGravity());
     m_tracker.EndStep();
     m_stats.steps += 1;
@@ -122,6 +127,13 @@ void Effects::Step(float dt)
     m_stats.live = m_particles.Count();
     m_stats.liveMax = std::max(m_stats.liveMax, m_stats.live);
     m_stats.recycled = m_particles.Recycled();
+    if (m_eventListener != nullptr)
+    {
+        for (const EffectEvent& event : m_events)
+        {
+            m_eventListener->OnEffectEvent(event);
+        }
+    }
 }
 
 } // namespace cfx

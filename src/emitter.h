@@ -3,7 +3,9 @@
 // For every tracked contact with manifold points: one sample per manifold point (or only the first,
 // per the rule's model) -> intensity -> a count of particles (one per step in the tutorial's mode, or a
 // rate accumulated across steps so the count does not depend on the step rate) -> one start point per
-// sample, found outside both surfaces -> velocities and lives per particle. Randomness comes from one
+// sample, found outside both surfaces -> velocities and lives per particle. The same pass decides the
+// contact's scrape (began / changed / ended) and reports its impact (with a burst of particles) when it
+// began touching fast enough since the last step. Randomness comes from one
 // seeded generator drawn in a fixed order (rules, then contacts in tracking order, then points), so
 // the same inputs and seed give the same particles bit for bit.
 #pragma once
@@ -12,6 +14,7 @@
 #include "random.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace cfx::detail
 {
@@ -21,11 +24,22 @@ class Emitter
 public:
     explicit Emitter(std::uint64_t seed) : m_random(seed) {}
 
-    /// Emits for every tracked contact of every rule into `particles`; updates `stats`.
+    /// For every tracked contact of every rule: emits into `particles`, appends scrape and impact events
+    /// to `events` (events.h gives the order), updates `stats`.
     void Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker, ParticleSystem& particles,
-              EffectsStats& stats, float dt);
+              EffectsStats& stats, std::vector<EffectEvent>& events, float dt);
 
 private:
+    struct RuleContext;
+    void UpdateContact(RuleContext& context, TrackedContact& tracked);
+    void UpdateScrape(RuleContext& context, TrackedContact& tracked, const ContactSample& loudest,
+                      float intensity, float impulseSum);
+    void Impact(RuleContext& context, TrackedContact& tracked);
+    static void FillContactFields(const RuleContext& context, const TrackedContact& tracked,
+                                  EffectEvent& event);
+    void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
+                        float intensity, int count);
+
     Random m_random;
 };
 

@@ -1,11 +1,20 @@
+// contactfx: the particle pool (see particle_system.h). This file owns the storage, spawning, recycling
+// and the shape of a step: scan the world (serial), advance runs of particles (one per thread), then
+// join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
 #include "contactfx/particle_system.h"
 
+#include "particles/motion.h"
+#include "particles/workers.h"
+#include "particles/world_geometry.h"
+
 #include <algorithm>
+#include <array>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-#include <cmath>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace cfx
@@ -14,7 +23,7 @@ namespace cfx
 namespace
 {
 
-// What the hot loop needs of a particle type, flat.
+// What a particle type is to the pool, flat.
 struct TypeParams
 {
     float gravityScale;
@@ -31,7 +40,19 @@ struct TypeParams
 };
 
 // Below this approach speed (m/s) a hit does not bounce: particles come to rest instead of jittering.
+// Box2D mixes it with the fixture's restitution threshold by taking the smaller; so do pool particles.
 constexpr float kRestSpeed = 0.5f;
+
+constexpr unsigned kMaxThreads = 8;
+
+// Bytes of the arrays every step walks, per slot; the layout promise of the header.
+constexpr std::size_t kHotBytesPerSlot = 5 * sizeof(float) + sizeof(std::uint16_t) + sizeof(std::uint8_t);
+static_assert(kHotBytesPerSlot == 23,
+              "position, velocity, life, type and the resting mark: 23 bytes a particle");
+static_assert(sizeof(particles::TypeStep) <= 64, "a type's step constants fit in a cache line");
+
+// Logical index and time left to live, for lowest-life recycling; ordered by time left, then age.
+using Candidate = std::pair<float, std::uint32_t>;
 
 } // namespace
 
@@ -41,28 +62,42 @@ struct ParticleSystem::Impl
 
     b2World& world;
     std::vector<TypeParams> types;
+    std::vector<particles::TypeStep> steps; // per type, rebuilt each step
     bool anyBodyBacked = false;
+    bool anyPoolCollides = false;
+    RecyclePolicy policy = RecyclePolicy::oldest;
+    unsigned threads = 1;
+    std::uint32_t minPerThread = 1;
 
     // Hot: touched by every step, one entry per slot.
     std::vector<float> positionX, positionY, velocityX, velocityY, life;
     std::vector<std::uint16_t> type;
+    std::vector<std::uint8_t> resting;
     // Cold: bodies of body-backed particles (empty when no type is body-backed).
     std::vector<b2Body*> body;
     detail::PointerMap bodySet;
     std::uint32_t head = 0;
 
-    void CopySlot(std::uint32_t from, std::uint32_t to)
+    particles::WorldGeometry geometry;
+    // What the resting marks were made under (see motion.h).
+    float lastDt = 0.0f;
+    b2Vec2 lastGravity{0.0f, 0.0f};
+    std::uint64_t lastBuilds = 0;
+    particles::Workers workers;
+    std::array<std::vector<b2Body*>, kMaxThreads> dead; // reserved to capacity when body-backed
+
+    // Lowest-life recycling: the next victims, cheapest first; invalid after a step.
+    std::vector<Candidate> candidates;
+    std::size_t nextCandidate = 0;
+    bool candidatesValid = false;
+
+    particles::PoolArrays Arrays(std::uint32_t capacity)
     {
-        positionX[to] = positionX[from];
-        positionY[to] = positionY[from];
-        velocityX[to] = velocityX[from];
-        velocityY[to] = velocityY[from];
-        life[to] = life[from];
-        type[to] = type[from];
-        if (anyBodyBacked)
-        {
-            body[to] = body[from];
-        }
+        return particles::PoolArrays{positionX.data(), positionY.data(),
+                                     velocityX.data(), velocityY.data(),
+                                     life.data(),      type.data(),
+                                     resting.data(),   anyBodyBacked ? body.data() : nullptr,
+                                     capacity,         head};
     }
 
     void ReleaseBody(std::uint32_t slot)
@@ -92,6 +127,7 @@ struct ParticleSystem::Impl
         fixtureDef.density = params.density;
         fixtureDef.friction = params.friction;
         fixtureDef.restitution = params.restitution;
+        fixtureDef.restitutionThreshold = kRestSpeed;
         fixtureDef.filter.categoryBits = params.categoryBits;
         fixtureDef.filter.maskBits = params.collide ? params.maskBits : 0;
         created->CreateFixture(&fixtureDef);
@@ -99,99 +135,27 @@ struct ParticleSystem::Impl
         return created;
     }
 
-    void MovePoolParticle(const TypeParams& params, std::uint32_t slot, float dt, b2Vec2 gravity);
+    void BuildCandidates(std::uint32_t count, std::uint32_t capacity)
+    {
+        const particles::PoolArrays pool = Arrays(capacity);
+        candidates.clear();
+        for (std::uint32_t i = 0; i < count; ++i)
+        {
+            const std::uint32_t slot = pool.Slot(i);
+            candidates.emplace_back(life[slot] / types[type[slot]].lifeRate, i);
+        }
+        const std::size_t keep = std::min<std::size_t>(count, std::max<std::size_t>(64, count / 64));
+        std::nth_element(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(keep - 1),
+                         candidates.end());
+        candidates.resize(keep);
+        std::sort(candidates.begin(), candidates.end());
+        nextCandidate = 0;
+        candidatesValid = true;
+    }
 };
-
-namespace
-{
-
-// Closest fixture a particle of a type may hit along a segment.
-class SweepCallback final : public b2RayCastCallback
-{
-public:
-    SweepCallback(const TypeParams& params, const detail::PointerMap& particleBodies)
-        : m_params(params), m_particleBodies(particleBodies)
-    {
-    }
-
-    float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2& normal,
-                        float fraction) override
-    {
-        const b2Filter& filter = fixture->GetFilterData();
-        if (fixture->IsSensor() || (filter.maskBits & m_params.categoryBits) == 0 ||
-            (filter.categoryBits & m_params.maskBits) == 0 ||
-            m_particleBodies.Find(fixture->GetBody()) != nullptr)
-        {
-            return -1.0f;
-        }
-        hitFixture = fixture;
-        hitPoint = point;
-        hitNormal = normal;
-        return fraction;
-    }
-
-    b2Fixture* hitFixture = nullptr;
-    b2Vec2 hitPoint{0.0f, 0.0f};
-    b2Vec2 hitNormal{0.0f, 0.0f};
-
-private:
-    const TypeParams& m_params;
-    const detail::PointerMap& m_particleBodies;
-};
-
-} // namespace
-
-void ParticleSystem::Impl::MovePoolParticle(const TypeParams& params, std::uint32_t slot, float dt,
-                                            b2Vec2 gravity)
-{
-    b2Vec2 velocity(velocityX[slot], velocityY[slot]);
-    velocity += (dt * params.gravityScale) * gravity;
-    velocity *= 1.0f / (1.0f + dt * params.drag);
-    b2Vec2 position(positionX[slot], positionY[slot]);
-    b2Vec2 move = dt * velocity;
-    float length = move.Length();
-    if (params.collide && length > 0.0f)
-    {
-        b2Vec2 direction = (1.0f / length) * move;
-        SweepCallback sweep(params, bodySet);
-        world.RayCast(&sweep, position, position + move + params.radius * direction);
-        if (sweep.hitFixture != nullptr)
-        {
-            b2Vec2 normal = sweep.hitNormal;
-            b2Vec2 surfaceVelocity =
-                sweep.hitFixture->GetBody()->GetLinearVelocityFromWorldPoint(sweep.hitPoint);
-            b2Vec2 relative = velocity - surfaceVelocity;
-            float approach = b2Dot(relative, normal);
-            if (approach < 0.0f)
-            {
-                b2Vec2 tangential = relative - approach * normal;
-                float bounce = -approach > kRestSpeed ? -params.restitution * approach : 0.0f;
-                float normalChange = bounce - approach; // > 0
-                float slide = tangential.Length();
-                float slideAfter = std::max(0.0f, slide - params.friction * normalChange);
-                b2Vec2 tangentialAfter =
-                    slide > 0.0f ? (slideAfter / slide) * tangential : b2Vec2(0.0f, 0.0f);
-                velocity = surfaceVelocity + tangentialAfter + bounce * normal;
-            }
-            position = sweep.hitPoint + params.radius * normal;
-        }
-        else
-        {
-            position += move;
-        }
-    }
-    else
-    {
-        position += move;
-    }
-    positionX[slot] = position.x;
-    positionY[slot] = position.y;
-    velocityX[slot] = velocity.x;
-    velocityY[slot] = velocity.y;
-}
 
 ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types,
-                               const ParticleBudget& budget)
+                               const ParticleBudget& budget, const ParticleSystemOptions& options)
     : m_impl(std::make_unique<Impl>(world)), m_capacity(budget.capacity)
 {
     Impl& impl = *m_impl;
@@ -210,18 +174,33 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
         params.collide = def.collide;
         params.bodyBacked = def.backend == ParticleBackend::body;
         impl.anyBodyBacked = impl.anyBodyBacked || params.bodyBacked;
+        impl.anyPoolCollides = impl.anyPoolCollides || (!params.bodyBacked && params.collide);
         impl.types.push_back(params);
     }
+    impl.steps.resize(impl.types.size());
+    impl.policy = budget.recycle;
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    impl.threads = std::clamp(options.threads == 0 ? hardware : options.threads, 1u, kMaxThreads);
+    impl.minPerThread = std::max<std::uint32_t>(1, options.minParticlesPerThread);
     impl.positionX.resize(m_capacity);
     impl.positionY.resize(m_capacity);
     impl.velocityX.resize(m_capacity);
     impl.velocityY.resize(m_capacity);
     impl.life.resize(m_capacity);
     impl.type.resize(m_capacity);
+    impl.resting.resize(m_capacity);
     if (impl.anyBodyBacked)
     {
         impl.body.assign(m_capacity, nullptr);
         impl.bodySet.Reserve(m_capacity);
+        for (unsigned part = 0; part < impl.threads; ++part)
+        {
+            impl.dead[part].reserve(m_capacity);
+        }
+    }
+    if (impl.policy == RecyclePolicy::lowestLife)
+    {
+        impl.candidates.reserve(m_capacity);
     }
 }
 
@@ -245,6 +224,18 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     {
         slot = View().Slot(m_count);
         ++m_count;
+        impl.candidatesValid = false;
+    }
+    else if (impl.policy == RecyclePolicy::lowestLife)
+    {
+        // Full: the particle with the least time left makes room and the new one takes its place.
+        if (!impl.candidatesValid || impl.nextCandidate == impl.candidates.size())
+        {
+            impl.BuildCandidates(m_count, m_capacity);
+        }
+        slot = View().Slot(impl.candidates[impl.nextCandidate++].second);
+        impl.ReleaseBody(slot);
+        ++m_recycled;
     }
     else
     {
@@ -262,6 +253,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.velocityY[slot] = spawn.velocity.y;
     impl.life[slot] = std::min(spawn.life, 1.0f);
     impl.type[slot] = spawn.type.index;
+    impl.resting[slot] = 0;
     if (impl.anyBodyBacked)
     {
         impl.body[slot] =
@@ -271,38 +263,107 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
 
 void ParticleSystem::Step(float dt, b2Vec2 gravity)
 {
-    Impl& impl = *m_impl;
-    ParticleView view = View();
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = 0; i < m_count; ++i)
+    Advance(dt, gravity, true);
+}
+
+void ParticleSystem::Integrate(float dt, b2Vec2 gravity)
+{
+    Advance(dt, gravity, false);
+}
+
+namespace
+{
+
+// One step's split of the particles into runs, shared with the helper threads.
+struct StepJob
+{
+    particles::PoolArrays pool;
+    const particles::TypeStep* steps;
+    const particles::WorldGeometry* geometry;
+    std::vector<b2Body*>* dead;
+    float dt;
+    bool trustResting;
+    std::array<std::uint32_t, kMaxThreads + 1> begin;
+    std::array<std::uint32_t, kMaxThreads> kept;
+
+    static void Run(void* context, unsigned part)
     {
-        std::uint32_t slot = view.Slot(i);
-        const TypeParams& params = impl.types[impl.type[slot]];
-        if (params.bodyBacked)
-        {
-            const b2Body* body = impl.body[slot];
-            impl.positionX[slot] = body->GetPosition().x;
-            impl.positionY[slot] = body->GetPosition().y;
-            impl.velocityX[slot] = body->GetLinearVelocity().x;
-            impl.velocityY[slot] = body->GetLinearVelocity().y;
-        }
-        else
-        {
-            impl.MovePoolParticle(params, slot, dt, gravity);
-        }
-        impl.life[slot] -= dt * params.lifeRate;
-        if (impl.life[slot] <= 0.0f)
-        {
-            impl.ReleaseBody(slot);
-            continue;
-        }
-        std::uint32_t target = view.Slot(kept++);
-        if (target != slot)
-        {
-            impl.CopySlot(slot, target);
-        }
+        auto& job = *static_cast<StepJob*>(context);
+        job.kept[part] = particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trustResting,
+                                                 job.begin[part], job.begin[part + 1], job.dead[part]);
     }
-    m_count = kept;
+};
+
+} // namespace
+
+void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
+{
+    Impl& impl = *m_impl;
+    impl.candidatesValid = false;
+    for (std::size_t t = 0; t < impl.types.size(); ++t)
+    {
+        const TypeParams& params = impl.types[t];
+        particles::TypeStep& step = impl.steps[t];
+        step.gravityDelta = (dt * params.gravityScale) * gravity;
+        step.damping = 1.0f / (1.0f + dt * params.drag);
+        step.lifeLoss = dt * params.lifeRate;
+        step.side = particles::ParticleSide{params.radius, params.restitution,  params.friction,
+                                            kRestSpeed,    params.categoryBits, params.maskBits};
+        step.collide = params.collide;
+        step.bodyBacked = params.bodyBacked;
+    }
+    const bool scan = collide && impl.anyPoolCollides && m_count > 0;
+    bool trustResting = false;
+    if (scan)
+    {
+        impl.geometry.Scan(impl.world, impl.anyBodyBacked ? this : nullptr, dt);
+        trustResting = dt == impl.lastDt && gravity == impl.lastGravity &&
+                       impl.geometry.StaticBuilds() == impl.lastBuilds;
+        impl.lastDt = dt;
+        impl.lastGravity = gravity;
+        impl.lastBuilds = impl.geometry.StaticBuilds();
+    }
+
+    const unsigned parts = std::clamp(m_count / impl.minPerThread, 1u, impl.threads);
+    StepJob job{impl.Arrays(m_capacity),
+                impl.steps.data(),
+                scan ? &impl.geometry : nullptr,
+                impl.dead.data(),
+                dt,
+                trustResting,
+                {},
+                {}};
+    for (unsigned part = 0; part <= parts; ++part)
+    {
+        job.begin[part] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(m_count) * part / parts);
+    }
+    impl.workers.Run(parts, &StepJob::Run, &job);
+    m_threadsUsed = parts;
+
+    std::uint32_t total = job.kept[0];
+    for (unsigned part = 1; part < parts; ++part)
+    {
+        if (job.begin[part] != total && job.kept[part] > 0)
+        {
+            particles::MoveParticles(job.pool, job.begin[part], total, job.kept[part]);
+        }
+        total += job.kept[part];
+    }
+    for (unsigned part = 0; part < parts; ++part)
+    {
+        for (b2Body* dead : impl.dead[part])
+        {
+            impl.bodySet.Erase(dead);
+            impl.world.DestroyBody(dead);
+        }
+        impl.dead[part].clear();
+    }
+    m_count = total;
+}
+
+void ParticleSystem::InvalidateStaticGeometry()
+{
+    m_impl->geometry.Invalidate();
 }
 
 ParticleView ParticleSystem::View() const
@@ -324,6 +385,34 @@ ParticleView ParticleSystem::View() const
 bool ParticleSystem::Ignore(const b2Body* body) const
 {
     return m_impl->bodySet.Find(body) != nullptr;
+}
+
+std::uint64_t ParticleSystem::StaticGeometryBuilds() const
+{
+    return m_impl->geometry.StaticBuilds();
+}
+
+std::size_t ParticleSystem::BytesPerSlot() const
+{
+    const Impl& impl = *m_impl;
+    std::size_t bytes = kHotBytesPerSlot;
+    if (impl.anyBodyBacked)
+    {
+        bytes += sizeof(b2Body*) * (1 + impl.threads); // the body, and room in each run's dead list
+    }
+    if (impl.policy == RecyclePolicy::lowestLife)
+    {
+        bytes += sizeof(Candidate);
+    }
+    return bytes;
+}
+
+std::size_t ParticleSystem::MemoryBytes() const
+{
+    const Impl& impl = *m_impl;
+    std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
+    bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
+    return bytes + impl.geometry.Bytes();
 }
 
 } // namespace cfx

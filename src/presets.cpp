@@ -47,6 +47,30 @@ RuleDef Rule(const char* a, const char* b, const char* particle)
     return rule;
 }
 
+MaterialAssignment Assign(const char* material, BodyTypeFilter bodyType)
+{
+    MaterialAssignment assignment;
+    assignment.material = material;
+    assignment.bodyType = bodyType;
+    return assignment;
+}
+
+// How the tutorial told its materials apart before they were stored in the scene (NOTES.md): steel is a
+// fixture of the body heavier than 3 kg (the car), concrete a static fixture with friction above 0.5,
+// dirt one below, rubber any other dynamic body heavier than 0.4 kg (the wheels). First match wins.
+std::vector<MaterialAssignment> TutorialGuesses()
+{
+    MaterialAssignment steel = Assign("steel", BodyTypeFilter::any);
+    steel.massAbove = 3.0f;
+    MaterialAssignment concrete = Assign("concrete", BodyTypeFilter::staticBody);
+    concrete.frictionAbove = 0.5f;
+    MaterialAssignment dirt = Assign("dirt", BodyTypeFilter::staticBody);
+    dirt.frictionBelow = 0.5f;
+    MaterialAssignment rubber = Assign("rubber", BodyTypeFilter::dynamicBody);
+    rubber.massAbove = 0.4f;
+    return {steel, concrete, dirt, rubber};
+}
+
 } // namespace
 
 EffectsConfig TutorialPreset()
@@ -90,6 +114,7 @@ EffectsConfig TutorialPreset()
         rule.placement = SpawnPlacement::tutorialDrop;
     }
     config.budget = ParticleBudget{100, RecyclePolicy::oldest};
+    config.assignments = TutorialGuesses();
     return config;
 }
 
@@ -176,6 +201,7 @@ EffectsConfig DefaultPreset()
     config.rules[2].burstPerSpeed = 4.0f;
     config.rules[3].burstPerSpeed = 2.0f;
     config.budget = ParticleBudget{8192, RecyclePolicy::oldest};
+    config.assignments = TutorialGuesses(); // plain scenes get effects without a `material` property
     return config;
 }
 

@@ -27,13 +27,18 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
             "UINT64"))
         ->capture_default_str();
     command.add_option("--stats", options.stats, "Write statistics as JSON to this file");
-    if (!demo)
-    {
-        command.add_option("--preset", options.preset, "Built-in effects: default or tutorial")
-            ->check(CLI::IsMember({"default", "tutorial"}))
-            ->capture_default_str();
-        command.add_option("--effects", options.effects, "Effects config JSON (overrides --preset)");
-    }
+    AddEffectsOptions(command, options,
+                      demo ? "Effects config JSON (overrides --preset); the tutorial scene's fixtures name "
+                             "steel, rubber, concrete and dirt"
+                           : "Effects config JSON (overrides --preset)");
+}
+
+void AddEffectsOptions(CLI::App& command, RunOptions& options, const std::string& effectsHelp)
+{
+    command.add_option("--preset", options.preset, "Built-in effects: default or tutorial")
+        ->check(CLI::IsMember({"default", "tutorial"}))
+        ->capture_default_str();
+    command.add_option("--effects", options.effects, effectsHelp);
 }
 
 void CheckRunOptions(const RunOptions& options)

@@ -25,11 +25,17 @@ struct RunOptions
     double seconds = 20.0; ///< simulated time, (0, 86400]
     double hz = 60.0;      ///< step rate, [1, 10000]
     std::uint64_t seed = 1;
-    std::string stats; ///< stats file; empty: none
+    std::string stats;  ///< stats file; empty: none
+    std::string events; ///< events file (JSON Lines); empty: none
 };
 
-/// Adds --seconds, --hz, --seed, --stats (and, unless `demo`, --preset and --effects) to `command`.
+/// Adds --seconds, --hz, --seed, --stats, --preset and --effects to `command`; `demo` (a command on the
+/// bundled tutorial scene) only changes the help of --effects.
 void AddRunOptions(CLI::App& command, RunOptions& options, bool demo);
+
+/// Adds --preset and --effects (the effects config every command that touches effects takes).
+void AddEffectsOptions(CLI::App& command, RunOptions& options,
+                       const std::string& effectsHelp = "Effects config JSON (overrides --preset)");
 
 /// Checks ranges CLI11 cannot (NaN, infinities); throws InputError naming the flag.
 void CheckRunOptions(const RunOptions& options);

@@ -3,11 +3,16 @@
 //   contactfx demo      the tutorial scene, driven by a script, headless
 //   contactfx run       any RUBE scene with effects
 //   contactfx preset    a built-in effects configuration as JSON
+//   contactfx validate  every problem of scenes and effects configs
+//   contactfx bench     time the particles (pool against a body per particle) and the effects layer
 //
 // Exit code 0 on success, 1 on any error (one line per problem on stderr, naming file and field).
+#include "bench_command.h"
 #include "cli_common.h"
 #include "preset_command.h"
+#include "render_command.h"
 #include "run_command.h"
+#include "validate_command.h"
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -18,7 +23,10 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     int result = cfx::cli::kExitOk;
     cfx::cli::RegisterRunCommands(app, result);
+    cfx::cli::RegisterBenchCommand(app, result);
     cfx::cli::RegisterPresetCommand(app, result);
+    cfx::cli::RegisterRenderCommand(app, result);
+    cfx::cli::RegisterValidateCommand(app, result);
     try
     {
         app.parse(argc, argv);

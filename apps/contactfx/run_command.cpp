@@ -2,7 +2,9 @@
 
 #include "cli_common.h"
 #include "contactfx/scene/text_file.h"
+#include "contactfx/sim/scenes.h"
 #include "contactfx/sim/simulation.h"
+#include "plot_option.h"
 
 #include <cmath>
 #include <cstdio>
@@ -44,7 +46,8 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
                 static_cast<unsigned long long>(stats.spawnedInsideSolid));
 }
 
-int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, const std::string& what)
+int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, const std::string& what,
+             const std::string& plotFile)
 {
     CheckRunOptions(options);
     SimulationDef def;
@@ -54,15 +57,30 @@ int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, con
     def.hz = static_cast<float>(options.hz);
     def.drive = drive;
     Simulation simulation(def);
+    PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));
+    std::string events;
     for (std::uint64_t i = 0; i < steps; ++i)
     {
         simulation.Step();
+        plot.AfterStep(simulation.GetEffects(), simulation.Dt());
+        if (!options.events.empty())
+        {
+            for (const EffectEvent& event : simulation.GetEffects().Events())
+            {
+                events += EventJsonLine(event, simulation.GetEffects().Config(), options.hz);
+            }
+        }
     }
     if (!options.stats.empty())
     {
         WriteTextFileAtomically(options.stats, StatsJson(simulation.GetEffects(), def.hz));
     }
+    if (!options.events.empty())
+    {
+        WriteTextFileAtomically(options.events, events);
+    }
+    plot.Write(simulation.GetEffects(), what);
     PrintSummary(simulation, options, what);
     return kExitOk;
 }
@@ -72,28 +90,39 @@ int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, con
 void RegisterRunCommands(CLI::App& app, int& result)
 {
     auto demoOptions = std::make_shared<RunOptions>();
+    auto demoPlot = std::make_shared<std::string>();
     CLI::App* demo =
         app.add_subcommand("demo", "The tutorial scene with a scripted drive and contactfx's default model");
     AddRunOptions(*demo, *demoOptions, true);
+    demo->add_option("--events", demoOptions->events,
+                     "Write scrape and impact events as JSON Lines to this file");
+    AddPlotOption(*demo, *demoPlot);
     demo->callback(
-        [demoOptions, &result]
+        [demoOptions, demoPlot, &result]
         {
             result = Guarded(
                 [&]
                 {
-                    demoOptions->scene = (ScenesDir() / "physics_driven_particles.json").string();
-                    return Simulate(*demoOptions, TutorialDrive(), "contactfx demo");
+                    const SceneEntry& tutorial = *FindScene("tutorial"); // the registry's (scenes.h)
+                    demoOptions->scene = (ScenesDir() / tutorial.file).string();
+                    return Simulate(*demoOptions, tutorial.drive, "contactfx demo", *demoPlot);
                 });
         });
 
     auto runOptions = std::make_shared<RunOptions>();
+    auto runPlot = std::make_shared<std::string>();
     CLI::App* run =
         app.add_subcommand("run", "Any RUBE scene: bodies move by their initial velocities and joint motors");
     run->add_option("scene", runOptions->scene, "RUBE JSON scene")->required();
     AddRunOptions(*run, *runOptions, false);
+    run->add_option("--events", runOptions->events,
+                    "Write scrape and impact events as JSON Lines to this file");
+    AddPlotOption(*run, *runPlot);
     run->callback(
-        [runOptions, &result] {
-            result = Guarded([&] { return Simulate(*runOptions, {}, "contactfx run " + runOptions->scene); });
+        [runOptions, runPlot, &result]
+        {
+            result = Guarded(
+                [&] { return Simulate(*runOptions, {}, "contactfx run " + runOptions->scene, *runPlot); });
         });
 }
 

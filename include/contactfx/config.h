@@ -1,11 +1,12 @@
 // contactfx: an effects configuration is plain data.
 //
-// Materials, particle types, pair rules and the particle budget, all by name, with defaults in place.
-// The same struct is built in code, read from an effects config JSON file (contactfx_scene), edited in
-// the testbed and written back. Validate() lists every problem with the field path, e.g.
-// `rules[2].threshold`; Effects refuses an invalid configuration with the same list.
+// Materials, particle types, pair rules, the particle budget and material assignment rules, all by name, with
+// defaults in place. The same struct is built in code, read from an effects config JSON file
+// (contactfx_scene), edited in the testbed and written back. Validate() lists every problem with the field
+// path, e.g. `rules[2].threshold`; Effects refuses an invalid configuration with the same list.
 #pragma once
 
+#include "contactfx/assignments.h"
 #include "contactfx/error.h"
 #include "contactfx/particle_types.h"
 #include "contactfx/rules.h"
@@ -21,7 +22,8 @@ namespace cfx
 /// Which particle makes room when the pool is full.
 enum class RecyclePolicy : std::uint8_t
 {
-    oldest, ///< the particle spawned first
+    oldest,     ///< the particle spawned first
+    lowestLife, ///< the particle with the least time left to live (ties: the oldest)
 };
 
 /// The particle budget.
@@ -41,6 +43,8 @@ struct EffectsConfig
     std::vector<ParticleTypeDef> particleTypes; ///< unique names
     std::vector<RuleDef> rules;                 ///< at most one per unordered material pair
     ParticleBudget budget;
+    /// Materials for fixtures without a `material` property, first match wins (assignments.h).
+    std::vector<MaterialAssignment> assignments;
 
     bool operator==(const EffectsConfig&) const = default;
 

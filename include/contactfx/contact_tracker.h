@@ -15,9 +15,11 @@
 #pragma once
 
 #include "contactfx/detail/pointer_map.h"
+#include "contactfx/events.h"
 #include "contactfx/materials.h"
 #include "contactfx/rules.h"
 
+#include <box2d/b2_math.h>
 #include <box2d/b2_world_callbacks.h>
 #include <cstdint>
 #include <span>
@@ -38,6 +40,16 @@ struct TrackedContact
     std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
     float emissionCarry[2] = {}; ///< fraction of a particle owed per manifold point (rate emission)
+
+    // Events (events.h).
+    std::uint32_t scrapeId = 0;        ///< id of the scrape going on, 0 when none
+    float quietTime = 0.0f;            ///< s the intensity has stayed at or below the threshold
+    b2Vec2 scrapePoint{0.0f, 0.0f};    ///< m, world: where the scrape was last reported
+    b2Vec2 scrapeNormal{0.0f, 0.0f};   ///< unit, rule's A toward B, as last reported
+    bool impactPending = false;        ///< began touching since the last Effects step
+    float approachSpeed = 0.0f;        ///< m/s along the normal at BeginContact, before the solver
+    b2Vec2 approachPoint{0.0f, 0.0f};  ///< m, world: the manifold point approaching fastest
+    b2Vec2 approachNormal{0.0f, 0.0f}; ///< unit, from the contact's fixture A to fixture B
 };
 
 class ContactTracker final : public b2ContactListener
@@ -62,8 +74,26 @@ public:
     /// Before the next b2World::Step: zeroes the recorded impulses and advances the step counter.
     void EndStep();
 
-    /// Drops every contact that involves `fixture` (before it is destroyed by the application).
+    /// Drops every contact that involves `fixture` (before it is destroyed by the application); their
+    /// scrapes end as `destroyed`.
     void ForgetFixture(const b2Fixture* fixture);
+    /// After Box2D destroyed `fixture` (b2DestructionListener): scrapes that ended with its contacts
+    /// are reported as `destroyed`.
+    void MarkDestroyed(const b2Fixture* fixture);
+
+    /// Scrapes that ended since the last ClearEndedScrapes(), in the order they ended.
+    std::span<const EffectEvent> EndedScrapes() const { return m_endedScrapes; }
+    void ClearEndedScrapes() { m_endedScrapes.clear(); }
+    /// Ends the scrape of a tracked contact (the emitter's decision: asleep or below the threshold).
+    EffectEvent EndScrape(TrackedContact& tracked, ScrapeEnd reason) const;
+    /// A fresh event id (scrapes and impacts); never 0, never reused.
+    std::uint32_t NewEventId() { return m_nextEventId++; }
+    const FixtureMaterials& Materials() const { return m_materials; }
+    /// The step counter: Effects steps completed.
+    std::uint64_t Step() const { return m_step; }
+    /// The fixtures of a tracked contact in the rule's order (materialA's first).
+    const b2Fixture* RuleFixtureA(const TrackedContact& tracked) const;
+    const b2Fixture* RuleFixtureB(const TrackedContact& tracked) const;
 
     // b2ContactListener: record, then forward.
     void BeginContact(b2Contact* contact) override;
@@ -72,15 +102,18 @@ public:
     void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
 
 private:
-    void Track(b2Contact* contact);
-    void Untrack(b2Contact* contact);
+    void Track(b2Contact* contact, bool firstTouch);
+    void Untrack(b2Contact* contact, ScrapeEnd reason);
+    void RecordApproach(b2Contact* contact, TrackedContact& tracked);
 
     const RuleTable& m_rules;
     const FixtureMaterials& m_materials;
     b2ContactListener* m_forward = nullptr;
     std::vector<std::vector<TrackedContact>> m_byRule;
     detail::PointerMap m_index; // contact -> (rule << 32) | slot
+    std::vector<EffectEvent> m_endedScrapes;
     std::uint32_t m_nextId = 1;
+    std::uint32_t m_nextEventId = 1;
     std::uint64_t m_step = 0;
 };
 

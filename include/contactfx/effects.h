@@ -8,9 +8,12 @@
 // Data flows one way, once per step: Box2D's callbacks record touching contacts and impulses
 // (ContactTracker) while the world steps; Effects::Step then turns every manifold point of every tracked
 // contact into an intensity, emits particles at a rate that grows with it, finds where they start, and
-// advances the particles. Nothing is created or destroyed inside Box2D callbacks.
+// advances the particles; the same pass reports scrapes and impacts as events (events.h). Nothing is
+// created or destroyed inside Box2D callbacks.
 //
-// Lifetime: create after the world, destroy before it. Effects installs itself as the world's contact
+// Lifetime: create after the world, destroy before it; one Effects per world at a time (destroy the old
+// one before creating its replacement). Contacts already touching when Effects is created are picked up
+// at the next world step (PreSolve). Effects installs itself as the world's contact
 // and destruction listener; give it the application's own listeners (EffectsDef or the setters) and it
 // forwards every callback to them. The destructor puts the application's listeners back.
 // Threading: one thread, the one that steps the world.
@@ -18,6 +21,7 @@
 
 #include "contactfx/config.h"
 #include "contactfx/contact_tracker.h"
+#include "contactfx/events.h"
 #include "contactfx/particle_system.h"
 
 #include <cstdint>
@@ -46,6 +50,7 @@ struct EffectsDef
     std::uint64_t seed = 1;                               ///< seeds every random choice
     b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
+    EffectEventListener* eventListener = nullptr;         ///< receives each step's events, may be null
 };
 
 /// Counters of one rule.
@@ -92,11 +97,14 @@ public:
 
     void SetContactListener(b2ContactListener* listener) { m_tracker.SetForward(listener); }
     void SetDestructionListener(b2DestructionListener* listener);
+    void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
 
     /// Runs after each b2World::Step with the same dt (s, > 0): emission, spawning, particle motion.
     void Step(float dt);
 
     const EffectsStats& Stats() const { return m_stats; }
+    /// The scrape and impact events of the last Step, in order (events.h). Valid until the next Step.
+    std::span<const EffectEvent> Events() const { return m_events; }
     ParticleView Particles() const { return m_particles.View(); }
     const EffectsConfig& Config() const { return m_config; }
     const ContactTracker& Tracker() const { return m_tracker; }
@@ -115,6 +123,8 @@ private:
     std::unique_ptr<Destruction> m_destruction;
     std::unique_ptr<detail::Emitter> m_emitter;
     EffectsStats m_stats;
+    std::vector<EffectEvent> m_events;
+    EffectEventListener* m_eventListener = nullptr;
 };
 
 } // namespace cfx

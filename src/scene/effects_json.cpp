@@ -46,13 +46,21 @@ constexpr std::array kPlacements{EnumName<SpawnPlacement>{SpawnPlacement::surfac
                                  EnumName<SpawnPlacement>{SpawnPlacement::tutorialDrop, "tutorialDrop"}};
 constexpr std::array kBackends{EnumName<ParticleBackend>{ParticleBackend::pool, "pool"},
                                EnumName<ParticleBackend>{ParticleBackend::body, "body"}};
-constexpr std::array kRecyclePolicies{EnumName<RecyclePolicy>{RecyclePolicy::oldest, "oldest"}};
+constexpr std::array kRecyclePolicies{EnumName<RecyclePolicy>{RecyclePolicy::oldest, "oldest"},
+                                      EnumName<RecyclePolicy>{RecyclePolicy::lowestLife, "lowestLife"}};
+
+constexpr std::array kBodyTypeFilters{EnumName<BodyTypeFilter>{BodyTypeFilter::any, "any"},
+                                      EnumName<BodyTypeFilter>{BodyTypeFilter::staticBody, "static"},
+                                      EnumName<BodyTypeFilter>{BodyTypeFilter::kinematicBody, "kinematic"},
+                                      EnumName<BodyTypeFilter>{BodyTypeFilter::dynamicBody, "dynamic"}};
 
 // One JSON field of struct S: a member of one of the supported kinds, or a nested enum.
 template <typename S> struct Field
 {
     const char* key;
-    std::variant<float S::*, bool S::*, std::string S::*, std::uint16_t S::*, Color S::*> member;
+    std::variant<float S::*, bool S::*, std::string S::*, std::uint16_t S::*, Color S::*,
+                 std::optional<float> S::*>
+        member;
 };
 
 const std::array kParticleFields{
@@ -92,6 +100,17 @@ const std::array kRuleFields{
     Field<RuleDef>{"impactThreshold", &RuleDef::impactThreshold},
     Field<RuleDef>{"burstPerSpeed", &RuleDef::burstPerSpeed},
     Field<RuleDef>{"burstMax", &RuleDef::burstMax},
+};
+
+// Optional bounds are written only when set.
+const std::array kAssignmentFields{
+    Field<MaterialAssignment>{"material", &MaterialAssignment::material},
+    Field<MaterialAssignment>{"bodyName", &MaterialAssignment::bodyName},
+    Field<MaterialAssignment>{"fixtureName", &MaterialAssignment::fixtureName},
+    Field<MaterialAssignment>{"frictionAbove", &MaterialAssignment::frictionAbove},
+    Field<MaterialAssignment>{"frictionBelow", &MaterialAssignment::frictionBelow},
+    Field<MaterialAssignment>{"massAbove", &MaterialAssignment::massAbove},
+    Field<MaterialAssignment>{"massBelow", &MaterialAssignment::massBelow},
 };
 
 const std::array kIntensityFields{
@@ -186,6 +205,10 @@ void ReadFields(const ObjectReader& reader, const std::array<Field<S>, N>& field
                 {
                     out.*member = static_cast<std::uint16_t>(reader.Int(field.key, out.*member, 0, 0xFFFF));
                 }
+                else if constexpr (std::is_same_v<T, std::optional<float>>)
+                {
+                    out.*member = reader.OptionalFloat(field.key);
+                }
                 else
                 {
                     if (std::optional<Color> color = ReadColor(*value, path, diagnostics))
@@ -261,7 +284,8 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         return config;
     }
     ObjectReader top(root, "", diagnostics);
-    static constexpr const char* kTopKeys[] = {"name", "materials", "particleTypes", "rules", "budget"};
+    static constexpr const char* kTopKeys[] = {"name",  "materials", "particleTypes",
+                                               "rules", "budget",    "assignments"};
     CheckKnownKeys(root, "", {}, kTopKeys, diagnostics);
     config.name = top.String("name");
 
@@ -312,6 +336,17 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
                       config.rules.push_back(rule);
                   });
 
+    const std::vector<const char*> assignmentKeys = Keys(kAssignmentFields);
+    ForEachObject(top, "assignments",
+                  [&](const ObjectReader& reader, const Json& object)
+                  {
+                      MaterialAssignment assignment;
+                      CheckKnownKeys(object, reader.Path(), {"bodyType"}, assignmentKeys, diagnostics);
+                      ReadFields(reader, kAssignmentFields, assignment);
+                      ReadEnum(reader, "bodyType", kBodyTypeFilters, assignment.bodyType);
+                      config.assignments.push_back(assignment);
+                  });
+
     if (const Json* budget = top.Object("budget"))
     {
         ObjectReader reader(*budget, "budget", diagnostics);
@@ -354,6 +389,13 @@ void WriteFields(Json& out, const std::array<Field<S>, N>& fields, const S& in)
                 if constexpr (std::is_same_v<T, float>)
                 {
                     out[field.key] = scene_detail::ExactFloat(in.*member);
+                }
+                else if constexpr (std::is_same_v<T, std::optional<float>>)
+                {
+                    if (in.*member)
+                    {
+                        out[field.key] = scene_detail::ExactFloat(*(in.*member));
+                    }
                 }
                 else if constexpr (std::is_same_v<T, Color>)
                 {
@@ -429,6 +471,14 @@ std::string SaveEffectsString(const EffectsConfig& config)
         WriteFields(intensity, kIntensityFields, rule.intensity);
         out["intensity"] = intensity;
         root["rules"].push_back(out);
+    }
+    root["assignments"] = Json::array();
+    for (const MaterialAssignment& assignment : config.assignments)
+    {
+        Json out = Json::object();
+        WriteFields(out, kAssignmentFields, assignment);
+        out["bodyType"] = NameOf(kBodyTypeFilters, assignment.bodyType);
+        root["assignments"].push_back(out);
     }
     root["budget"] = Json{{"capacity", config.budget.capacity},
                           {"recycle", NameOf(kRecyclePolicies, config.budget.recycle)}};

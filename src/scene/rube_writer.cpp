@@ -58,30 +58,44 @@ private:
     std::unordered_map<const b2Joint*, int> m_jointIndex;
 };
 
-void SceneWriter::OrderBodies(b2World& world)
+// Objects in file order: first those the scene remembers (in its order), then any the application
+// added since, oldest first (Box2D lists the newest first). `next` walks Box2D's list; `entries` are the
+// scene's records, `objectOf` gives a record's Box2D object.
+template <typename T, typename Entry, typename Next, typename ObjectOf>
+std::vector<std::pair<T*, const Entry*>> InFileOrder(T* first, Next next, const std::vector<Entry>& entries,
+                                                     ObjectOf objectOf)
 {
-    std::vector<b2Body*> listed;
-    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    std::vector<T*> listed;
+    for (T* object = first; object != nullptr; object = next(object))
     {
-        listed.push_back(body);
+        listed.push_back(object);
     }
-    const std::unordered_set<const b2Body*> alive(listed.begin(), listed.end());
-    std::unordered_set<const b2Body*> taken;
-    for (const SceneBody& entry : m_scene.bodies)
+    const std::unordered_set<const T*> alive(listed.begin(), listed.end());
+    std::unordered_set<const T*> taken;
+    std::vector<std::pair<T*, const Entry*>> ordered;
+    for (const Entry& entry : entries)
     {
-        if (entry.body != nullptr && alive.count(entry.body) != 0 && taken.insert(entry.body).second)
+        T* object = objectOf(entry);
+        if (object != nullptr && alive.count(object) != 0 && taken.insert(object).second)
         {
-            m_bodies.emplace_back(entry.body, &entry);
+            ordered.emplace_back(object, &entry);
         }
     }
-    // Box2D lists the newest body first.
     for (auto it = listed.rbegin(); it != listed.rend(); ++it)
     {
         if (taken.insert(*it).second)
         {
-            m_bodies.emplace_back(*it, nullptr);
+            ordered.emplace_back(*it, nullptr);
         }
     }
+    return ordered;
+}
+
+void SceneWriter::OrderBodies(b2World& world)
+{
+    m_bodies = InFileOrder(
+        world.GetBodyList(), [](b2Body* body) { return body->GetNext(); }, m_scene.bodies,
+        [](const SceneBody& entry) { return entry.body; });
     for (std::size_t i = 0; i < m_bodies.size(); ++i)
     {
         m_bodyIndex[m_bodies[i].first] = static_cast<int>(i);
@@ -90,27 +104,9 @@ void SceneWriter::OrderBodies(b2World& world)
 
 void SceneWriter::OrderJoints(b2World& world)
 {
-    std::vector<b2Joint*> listed;
-    for (b2Joint* joint = world.GetJointList(); joint != nullptr; joint = joint->GetNext())
-    {
-        listed.push_back(joint);
-    }
-    const std::unordered_set<const b2Joint*> alive(listed.begin(), listed.end());
-    std::unordered_set<const b2Joint*> taken;
-    for (const SceneJoint& entry : m_scene.joints)
-    {
-        if (entry.joint != nullptr && alive.count(entry.joint) != 0 && taken.insert(entry.joint).second)
-        {
-            m_joints.emplace_back(entry.joint, &entry);
-        }
-    }
-    for (auto it = listed.rbegin(); it != listed.rend(); ++it)
-    {
-        if (taken.insert(*it).second)
-        {
-            m_joints.emplace_back(*it, nullptr);
-        }
-    }
+    m_joints = InFileOrder(
+        world.GetJointList(), [](b2Joint* joint) { return joint->GetNext(); }, m_scene.joints,
+        [](const SceneJoint& entry) { return entry.joint; });
     // Gear joints last, so that readers creating joints in file order find the joints a gear refers to.
     std::stable_partition(m_joints.begin(), m_joints.end(),
                           [](const auto& item) { return item.first->GetType() != e_gearJoint; });
@@ -122,27 +118,13 @@ void SceneWriter::OrderJoints(b2World& world)
 
 std::vector<b2Fixture*> SceneWriter::OrderFixtures(b2Body& body) const
 {
-    std::vector<b2Fixture*> listed;
-    for (b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
-    {
-        listed.push_back(fixture);
-    }
-    const std::unordered_set<const b2Fixture*> alive(listed.begin(), listed.end());
-    std::unordered_set<const b2Fixture*> taken;
+    // Only this body's fixtures are alive in its list, so the scene's records of others drop out.
     std::vector<b2Fixture*> ordered;
-    for (const SceneFixture& entry : m_scene.fixtures)
+    for (const auto& [fixture, entry] : InFileOrder(
+             body.GetFixtureList(), [](b2Fixture* fixture) { return fixture->GetNext(); }, m_scene.fixtures,
+             [](const SceneFixture& record) { return record.fixture; }))
     {
-        if (entry.fixture != nullptr && alive.count(entry.fixture) != 0 && taken.insert(entry.fixture).second)
-        {
-            ordered.push_back(entry.fixture);
-        }
-    }
-    for (auto it = listed.rbegin(); it != listed.rend(); ++it)
-    {
-        if (taken.insert(*it).second)
-        {
-            ordered.push_back(*it);
-        }
+        ordered.push_back(fixture);
     }
     return ordered;
 }

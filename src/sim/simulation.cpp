@@ -3,55 +3,11 @@
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
+#include <chrono>
 #include <nlohmann/json.hpp>
 
 namespace cfx
 {
-
-void AssignSceneMaterials(const Scene& scene, Effects& effects, std::string_view file)
-{
-    std::vector<Diagnostic> problems;
-    std::vector<int> fixturesSeen(scene.bodies.size(), 0);
-    for (const SceneFixture& fixture : scene.fixtures)
-    {
-        const int indexInBody = fixturesSeen[static_cast<std::size_t>(fixture.bodyIndex)]++;
-        for (std::size_t k = 0; k < fixture.properties.items.size(); ++k)
-        {
-            const CustomProperty& property = fixture.properties.items[k];
-            if (property.name != "material")
-            {
-                continue;
-            }
-            const std::string path = "body[" + std::to_string(fixture.bodyIndex) + "].fixture[" +
-                                     std::to_string(indexInBody) + "].customProperties[" + std::to_string(k) +
-                                     "]";
-            const std::string* name = std::get_if<std::string>(&property.value);
-            if (name == nullptr)
-            {
-                problems.push_back({std::string(file), path, "expected the material as a string property"});
-                continue;
-            }
-            const MaterialId material = effects.FindMaterial(*name);
-            if (!material.IsValid())
-            {
-                std::string known;
-                for (const std::string& each : effects.Config().materials)
-                {
-                    known += (known.empty() ? "" : ", ") + each;
-                }
-                problems.push_back(
-                    {std::string(file), path + ".string",
-                     "unknown material \"" + *name + "\" (the effects config has: " + known + ")"});
-                continue;
-            }
-            effects.SetMaterial(fixture.fixture, material);
-        }
-    }
-    if (!problems.empty())
-    {
-        throw InputError(std::move(problems));
-    }
-}
 
 namespace
 {
@@ -68,7 +24,8 @@ float CheckedHz(float hz)
 } // namespace
 
 Simulation::Simulation(const SimulationDef& def)
-    : m_scene(LoadRubeFile(def.scene)), m_drive(def.drive), m_dt(1.0f / CheckedHz(def.hz))
+    : m_scene(LoadRubeFile(def.scene)), m_drive(def.drive), m_sceneFile(def.scene.string()), m_seed(def.seed),
+      m_dt(1.0f / CheckedHz(def.hz))
 {
     EffectsDef effectsDef;
     effectsDef.config = def.config;
@@ -85,6 +42,23 @@ void Simulation::SetInput(const DriveInput& input)
     m_manual = input;
 }
 
+void Simulation::ReplaceEffects(const EffectsConfig& config)
+{
+    std::vector<Diagnostic> problems = Validate(config);
+    if (!problems.empty())
+    {
+        throw InputError(std::move(problems));
+    }
+    ResolveSceneMaterials(m_scene, config, m_sceneFile); // throws before anything changes
+    // The old effects put the world's listeners back before the new ones install theirs.
+    m_effects.reset();
+    EffectsDef effectsDef;
+    effectsDef.config = config;
+    effectsDef.seed = m_seed;
+    m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
+    AssignSceneMaterials(m_scene, *m_effects, m_sceneFile);
+}
+
 void Simulation::Step()
 {
     if (m_car)
@@ -98,9 +72,58 @@ void Simulation::Step()
             m_car->Apply(InputAt(m_drive, Time()));
         }
     }
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
     m_scene.world->Step(m_dt, m_scene.settings.velocityIterations, m_scene.settings.positionIterations);
+    const Clock::time_point stepped = Clock::now();
     m_effects->Step(m_dt);
+    m_times.worldMs = std::chrono::duration<double, std::milli>(stepped - start).count();
+    m_times.effectsMs = std::chrono::duration<double, std::milli>(Clock::now() - stepped).count();
     ++m_steps;
+}
+
+namespace
+{
+
+// "A+B" with the names sorted, as the stats file names rules.
+std::string PairName(const RuleDef& rule)
+{
+    return rule.materialA < rule.materialB ? rule.materialA + "+" + rule.materialB
+                                           : rule.materialB + "+" + rule.materialA;
+}
+
+} // namespace
+
+std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz)
+{
+    using Json = nlohmann::ordered_json;
+    static constexpr const char* kTypes[] = {"scrape_began", "scrape_changed", "scrape_ended", "impact"};
+    static constexpr const char* kReasons[] = {"none", "contact_ended", "asleep", "below_threshold",
+                                               "destroyed"};
+    Json line;
+    line["type"] = kTypes[static_cast<int>(event.type)];
+    line["step"] = event.step;
+    line["time"] = static_cast<double>(event.step + 1) / hz;
+    line["id"] = event.id;
+    line["pair"] = PairName(config.rules[event.rule.index]);
+    line["point"] = Json::array({event.point.x, event.point.y});
+    line["normal"] = Json::array({event.normal.x + 0.0f, event.normal.y + 0.0f}); // + 0: no "-0.0"
+    if (event.type == EffectEventType::impact)
+    {
+        line["approach_speed"] = event.approachSpeed;
+        line["normal_impulse"] = event.normalImpulse;
+    }
+    else if (event.type == EffectEventType::scrapeEnded)
+    {
+        line["reason"] = kReasons[static_cast<int>(event.end)];
+    }
+    else
+    {
+        line["intensity"] = event.intensity;
+        line["tangential_speed"] = event.tangentialSpeed;
+        line["normal_impulse"] = event.normalImpulse;
+    }
+    return line.dump() + "\n";
 }
 
 std::string StatsJson(const Effects& effects, float hz)
@@ -121,9 +144,7 @@ std::string StatsJson(const Effects& effects, float hz)
     std::vector<std::pair<std::string, std::size_t>> names;
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
-        std::string a = config.rules[i].materialA;
-        std::string b = config.rules[i].materialB;
-        names.emplace_back(a < b ? a + "+" + b : b + "+" + a, i);
+        names.emplace_back(PairName(config.rules[i]), i);
     }
     std::sort(names.begin(), names.end());
     Json rules = Json::object();

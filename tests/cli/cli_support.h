@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -16,10 +18,10 @@ struct CliResult
     std::string output; ///< stdout and stderr together
 };
 
-/// Runs `contactfx ARGS` (ARGS as shell words) and captures its output.
-inline CliResult RunCli(const std::string& args)
+/// Runs a shell command line and captures its output (stdout and stderr together).
+inline CliResult RunCommand(const std::string& commandLine)
 {
-    const std::string command = std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx " + args + " 2>&1";
+    const std::string command = commandLine + " 2>&1";
     CliResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe == nullptr)
@@ -34,6 +36,12 @@ inline CliResult RunCli(const std::string& args)
     const int status = pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+/// Runs `contactfx ARGS` (ARGS as shell words) and captures its output.
+inline CliResult RunCli(const std::string& args)
+{
+    return RunCommand(std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx " + args);
 }
 
 /// A fresh scratch folder for one test.
@@ -53,6 +61,21 @@ inline std::string Scene(const char* name)
 inline std::string Sample(const char* name)
 {
     return std::string(CONTACTFX_SHARED_DIR) + "/rube-samples/" + name;
+}
+
+/// A file's bytes ("" when it cannot be read).
+inline std::string FileText(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Writes a test input (not atomically: tests only).
+inline void WriteTestFile(const std::filesystem::path& path, const std::string& text)
+{
+    std::ofstream(path, std::ios::binary) << text;
 }
 
 } // namespace cfx::test

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -10,19 +11,6 @@ namespace cfx::test
 
 namespace
 {
-
-std::string Slurp(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void WriteFile(const std::filesystem::path& path, const std::string& text)
-{
-    std::ofstream(path) << text;
-}
 
 // A failing command: exit 1, one line naming `expected` (file and field), no stats file.
 void ExpectRefused(const std::string& args, const std::filesystem::path& stats,
@@ -47,7 +35,7 @@ TEST(CliRun, DemoPrintsASummaryAndWritesStats)
     CliResult result = RunCli("demo --seconds 3 --stats " + (dir / "stats.json").string());
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_NE(result.output.find("spawned:"), std::string::npos);
-    nlohmann::json stats = nlohmann::json::parse(Slurp(dir / "stats.json"));
+    nlohmann::json stats = nlohmann::json::parse(FileText(dir / "stats.json"));
     EXPECT_EQ(stats["steps"], 180);
     EXPECT_EQ(stats["hz"], 60.0);
     EXPECT_EQ(stats["seconds"], 3.0);
@@ -72,10 +60,10 @@ TEST(CliRun, SameCommandTwiceWritesByteIdenticalStats)
         "run " + Scene("physics_driven_particles.json") + " --seconds 4 --seed 9 --stats ";
     ASSERT_EQ(RunCli(args + (dir / "a.json").string()).exitCode, 0);
     ASSERT_EQ(RunCli(args + (dir / "b.json").string()).exitCode, 0);
-    EXPECT_EQ(Slurp(dir / "a.json"), Slurp(dir / "b.json"));
+    EXPECT_EQ(FileText(dir / "a.json"), FileText(dir / "b.json"));
     ASSERT_EQ(RunCli("demo --seconds 4 --seed 3 --stats " + (dir / "c.json").string()).exitCode, 0);
     ASSERT_EQ(RunCli("demo --seconds 4 --seed 3 --stats " + (dir / "d.json").string()).exitCode, 0);
-    EXPECT_EQ(Slurp(dir / "c.json"), Slurp(dir / "d.json"));
+    EXPECT_EQ(FileText(dir / "c.json"), FileText(dir / "d.json"));
 }
 
 TEST(CliRun, TutorialPresetKeepsAtMostHundredParticles)
@@ -84,7 +72,7 @@ TEST(CliRun, TutorialPresetKeepsAtMostHundredParticles)
     CliResult result = RunCli("run " + Scene("physics_driven_particles.json") +
                               " --preset tutorial --seconds 2 --stats " + (dir / "s.json").string());
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    nlohmann::json stats = nlohmann::json::parse(Slurp(dir / "s.json"));
+    nlohmann::json stats = nlohmann::json::parse(FileText(dir / "s.json"));
     EXPECT_LE(stats["live_max"].get<int>(), 100);
 }
 
@@ -97,6 +85,66 @@ TEST(CliRun, RunsAnyRubeSceneWithEffectsConfig)
     EXPECT_TRUE(std::filesystem::exists(dir / "s.json"));
 }
 
+TEST(CliRun, EventsFileHasOneObjectPerLineForEveryEvent)
+{
+    std::filesystem::path dir = ScratchDir("events");
+    ASSERT_EQ(RunCli("demo --seconds 12 --events " + (dir / "a.jsonl").string()).exitCode, 0);
+    ASSERT_EQ(RunCli("demo --seconds 12 --events " + (dir / "b.jsonl").string()).exitCode, 0);
+    const std::string text = FileText(dir / "a.jsonl");
+    EXPECT_EQ(text, FileText(dir / "b.jsonl"));
+    std::istringstream lines(text);
+    std::string line;
+    std::map<std::string, int> types;
+    std::map<std::uint32_t, std::string> lastOfScrape;
+    double lastTime = 0.0;
+    while (std::getline(lines, line))
+    {
+        const nlohmann::json event = nlohmann::json::parse(line);
+        const std::string type = event["type"];
+        ++types[type];
+        for (const char* key : {"step", "time", "id", "pair", "point"})
+        {
+            ASSERT_TRUE(event.contains(key)) << key << " in " << line;
+        }
+        EXPECT_EQ(event["point"].size(), 2u);
+        EXPECT_GE(event["time"].get<double>(), lastTime);
+        lastTime = event["time"];
+        const std::string pair = event["pair"];
+        EXPECT_LT(pair.substr(0, pair.find('+')), pair.substr(pair.find('+') + 1)) << "names sorted";
+        if (type == "impact")
+        {
+            EXPECT_GE(event["approach_speed"].get<double>(), 2.0);
+            EXPECT_GT(event["normal_impulse"].get<double>(), 0.0);
+            continue;
+        }
+        const std::uint32_t id = event["id"];
+        const std::string previous = lastOfScrape[id];
+        if (type == "scrape_began")
+        {
+            EXPECT_EQ(previous, "");
+        }
+        else
+        {
+            EXPECT_TRUE(previous == "scrape_began" || previous == "scrape_changed") << line;
+        }
+        if (type != "scrape_ended")
+        {
+            EXPECT_TRUE(event.contains("intensity")) << line;
+            EXPECT_TRUE(event.contains("tangential_speed")) << line;
+            EXPECT_TRUE(event.contains("normal_impulse")) << line;
+        }
+        else
+        {
+            EXPECT_TRUE(event.contains("reason")) << line;
+        }
+        lastOfScrape[id] = type;
+    }
+    EXPECT_GT(types["scrape_began"], 5);
+    EXPECT_GT(types["scrape_changed"], 100);
+    EXPECT_GT(types["scrape_ended"], 5);
+    EXPECT_GT(types["impact"], 2);
+}
+
 TEST(CliRun, BadInputIsRefusedWithFileAndField)
 {
     std::filesystem::path dir = ScratchDir("bad");
@@ -104,9 +152,9 @@ TEST(CliRun, BadInputIsRefusedWithFileAndField)
     const std::string tutorial = Scene("physics_driven_particles.json");
 
     ExpectRefused("run " + (dir / "missing.json").string(), stats, {"missing.json"});
-    WriteFile(dir / "truncated.json", "{\"gravity\": {\"x\": 0, \"y\": -10}, \"body\": [");
+    WriteTestFile(dir / "truncated.json", "{\"gravity\": {\"x\": 0, \"y\": -10}, \"body\": [");
     ExpectRefused("run " + (dir / "truncated.json").string(), stats, {"truncated.json:1:"});
-    WriteFile(dir / "wrongtype.json", R"({"body": [{"type": 2, "position": {"x": "abc", "y": 0}}]})");
+    WriteTestFile(dir / "wrongtype.json", R"({"body": [{"type": 2, "position": {"x": "abc", "y": 0}}]})");
     ExpectRefused("run " + (dir / "wrongtype.json").string(), stats,
                   {"wrongtype.json", "body[0].position.x"});
 
@@ -115,7 +163,7 @@ TEST(CliRun, BadInputIsRefusedWithFileAndField)
     text << in.rdbuf();
     std::string glass = text.str();
     glass.replace(glass.find("\"string\": \"steel\""), 17, "\"string\": \"glass\"");
-    WriteFile(dir / "glass.json", glass);
+    WriteTestFile(dir / "glass.json", glass);
     ExpectRefused("run " + (dir / "glass.json").string(), stats, {"glass.json", "customProperties", "glass"});
 
     ExpectRefused("run " + tutorial + " --seconds abc", stats, {"--seconds"});
@@ -126,14 +174,15 @@ TEST(CliRun, BadInputIsRefusedWithFileAndField)
     ExpectRefused("demo --seed -1", stats, {"--seed"});
     ExpectRefused("run " + tutorial + " --preset fancy", stats, {"--preset"});
 
-    WriteFile(dir / "negative.effects.json",
-              R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "radius": -0.5}]})");
+    WriteTestFile(dir / "negative.effects.json",
+                  R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "radius": -0.5}]})");
     ExpectRefused("run " + tutorial + " --effects " + (dir / "negative.effects.json").string(), stats,
                   {"negative.effects.json", "particleTypes[0].radius"});
-    WriteFile(dir / "nan.effects.json", R"({"particleTypes": [{"name": "sparks", "drag": "NaN"}]})");
+    WriteTestFile(dir / "nan.effects.json", R"({"particleTypes": [{"name": "sparks", "drag": "NaN"}]})");
     ExpectRefused("run " + tutorial + " --effects " + (dir / "nan.effects.json").string(), stats,
                   {"nan.effects.json", "particleTypes[0].drag"});
-    WriteFile(dir / "unknown.effects.json", R"({"materials": ["steel"], "particleTypes": [{"name": "sparks"}],
+    WriteTestFile(dir / "unknown.effects.json",
+                  R"({"materials": ["steel"], "particleTypes": [{"name": "sparks"}],
         "rules": [{"materialA": "steel", "materialB": "wood", "particleType": "sparks"}]})");
     ExpectRefused("run " + tutorial + " --effects " + (dir / "unknown.effects.json").string(), stats,
                   {"unknown.effects.json", "rules[0].materialB", "wood"});

@@ -1,4 +1,4 @@
-#include "test_world.h"
+#include "particles/particle_pool_fixture.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -9,49 +9,16 @@ namespace cfx::test
 namespace
 {
 
-ParticleTypeDef Ball(float restitution, float friction = 0.5f)
+// The common case of these tests: one type and a ground whose top is y = 0.
+struct ParticleWorld : Pool
 {
-    ParticleTypeDef type;
-    type.name = "ball";
-    type.radius = 0.05f;
-    type.restitution = restitution;
-    type.friction = friction;
-    type.lifetime = 100.0f;
-    return type;
-}
-
-struct ParticleWorld : TestWorld
-{
-    explicit ParticleWorld(ParticleTypeDef type, std::uint32_t capacity = 64)
+    explicit ParticleWorld(const ParticleTypeDef& type, std::uint32_t capacity = 64)
+        : Pool({type}, ParticleBudget{capacity, RecyclePolicy::oldest})
     {
         ground = CreateGround();
-        types = {std::move(type)};
-        system =
-            std::make_unique<ParticleSystem>(*world, types, ParticleBudget{capacity, RecyclePolicy::oldest});
-    }
-    void Add(b2Vec2 position, b2Vec2 velocity = b2Vec2(0.0f, 0.0f), float life = 1.0f)
-    {
-        system->Spawn(ParticleSpawn{position, velocity, life, ParticleTypeId{0}});
-    }
-    void StepAll(float dt = 1.0f / 60.0f)
-    {
-        world->Step(dt, 8, 3);
-        system->Step(dt, world->GetGravity());
-    }
-    b2Vec2 Position(std::uint32_t i) const
-    {
-        ParticleView view = system->View();
-        return b2Vec2(view.positionX[view.Slot(i)], view.positionY[view.Slot(i)]);
-    }
-    b2Vec2 Velocity(std::uint32_t i) const
-    {
-        ParticleView view = system->View();
-        return b2Vec2(view.velocityX[view.Slot(i)], view.velocityY[view.Slot(i)]);
     }
 
     b2Body* ground = nullptr;
-    std::vector<ParticleTypeDef> types;
-    std::unique_ptr<ParticleSystem> system; // destroyed before the world
 };
 
 } // namespace

@@ -112,4 +112,83 @@ TEST(EffectsJson, SaveNeverLeavesAHalfWrittenFile)
     EXPECT_FALSE(std::filesystem::exists(missing.parent_path()));
 }
 
+namespace
+{
+
+// A config with materials a and b, then the given assignments array text.
+std::string WithAssignments(const std::string& assignments)
+{
+    return R"({"materials": ["a", "b"], "assignments": [)" + assignments + "]}";
+}
+
+} // namespace
+
+TEST(AssignmentJson, RoundTripIsExactAndUnsetBoundsStayUnset)
+{
+    EffectsConfig config = DefaultPreset();
+    MaterialAssignment named;
+    named.material = "dirt";
+    named.bodyName = "ground_?";
+    named.fixtureName = "*mud*";
+    named.bodyType = BodyTypeFilter::kinematicBody;
+    named.frictionBelow = 1.0f / 3.0f;
+    named.massAbove = -2.5f;
+    named.massBelow = 1e-7f;
+    config.assignments.insert(config.assignments.begin(), named);
+    const EffectsConfig back = LoadEffectsString(SaveEffectsString(config), "x");
+    EXPECT_EQ(back, config);
+    EXPECT_FALSE(back.assignments[0].frictionAbove.has_value());
+}
+
+TEST(AssignmentJson, MissingFieldsTakeTheDefaults)
+{
+    const EffectsConfig config = LoadEffectsString(WithAssignments(R"({"material": "b"})"), "x");
+    ASSERT_EQ(config.assignments.size(), 1u);
+    MaterialAssignment expected;
+    expected.material = "b";
+    EXPECT_EQ(config.assignments[0], expected);
+    EXPECT_EQ(LoadEffectsString(WithAssignments(R"({"material": "a", "bodyType": "static"})"), "x")
+                  .assignments[0]
+                  .bodyType,
+              BodyTypeFilter::staticBody);
+}
+
+TEST(AssignmentJson, ReadingProblemsNameTheirPaths)
+{
+    EXPECT_EQ(
+        PathsOf(WithAssignments(R"({"material": 3, "bodyType": "heavy", "massAbove": "x",
+        "frictionAbove": 1e39, "frictionBelow": "7FC00000", "fixture": "wheel"}, 5)")),
+        (std::vector<std::string>{"assignments[0].fixture", "assignments[0].material",
+                                  "assignments[0].frictionAbove", "assignments[0].frictionBelow",
+                                  "assignments[0].massAbove", "assignments[0].bodyType", "assignments[1]"}));
+    EXPECT_EQ(PathsOf(R"({"materials": ["a"], "assignments": {"material": "a"}})"),
+              (std::vector<std::string>{"assignments"}));
+}
+
+TEST(AssignmentJson, SemanticProblemsNameTheirPaths)
+{
+    EXPECT_EQ(PathsOf(WithAssignments(R"({"material": "glass"}, {"material": "a", "bodyName": "",
+        "fixtureName": ""}, {"material": "b", "frictionAbove": 0.5, "frictionBelow": 0.5},
+        {"material": "b", "massAbove": 3, "massBelow": 1})")),
+              (std::vector<std::string>{"assignments[0].material", "assignments[1].bodyName",
+                                        "assignments[1].fixtureName", "assignments[2].frictionBelow",
+                                        "assignments[3].massBelow"}));
+}
+
+TEST(AssignmentValidate, ApiValuesAreCheckedToo)
+{
+    EffectsConfig config = TutorialPreset();
+    config.assignments[1].frictionAbove = std::nanf("");
+    config.assignments[2].bodyType = static_cast<BodyTypeFilter>(9);
+    config.assignments[3].material = "";
+    std::vector<std::string> paths;
+    for (const Diagnostic& problem : Validate(config))
+    {
+        EXPECT_EQ(problem.file, "<api>");
+        paths.push_back(problem.path);
+    }
+    EXPECT_EQ(paths, (std::vector<std::string>{"assignments[1].frictionAbove", "assignments[2].bodyType",
+                                               "assignments[3].material"}));
+}
+
 } // namespace cfx

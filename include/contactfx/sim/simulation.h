@@ -1,14 +1,16 @@
 // contactfx_sim: a scene, its effects and its driver, stepped together.
 //
 // What the CLI, the tests, the benchmarks and the testbed all do: load a RUBE scene, give its fixtures
-// the materials named by their custom property `material`, attach an Effects object, and step world and
-// effects at a fixed rate, with the tutorial car driven by a script or by the keyboard.
+// their materials (their custom property `material`, else the config's assignments), attach an Effects
+// object, and step world and effects at a fixed rate, with the tutorial car driven by a script or by the
+// keyboard.
 #pragma once
 
 #include "contactfx/effects.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/rube.h"
 #include "contactfx/sim/car.h"
+#include "contactfx/sim/scene_materials.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -20,11 +22,6 @@
 
 namespace cfx
 {
-
-/// Gives every fixture of `scene` the material its custom property `material` names. Throws
-/// InputError naming `file` and the property's JSON path (e.g.
-/// `body[1].fixture[0].customProperties[0].string`) for a name the config does not know.
-void AssignSceneMaterials(const Scene& scene, Effects& effects, std::string_view file);
 
 struct SimulationDef
 {
@@ -48,6 +45,20 @@ public:
     /// Overrides the script from now on (the testbed's keyboard).
     void SetInput(const DriveInput& input);
 
+    /// Replaces the effects by ones made from `config` (same seed), keeping the world as it is: bodies,
+    /// joints and touching contacts stay (the new effects pick the contacts up at the next step);
+    /// particles and counters start afresh. Throws InputError, leaving everything as it was, when
+    /// `config` is invalid or lacks a material that the scene's fixtures name. The testbed's live edits.
+    void ReplaceEffects(const EffectsConfig& config);
+
+    /// Wall-clock cost of the last Step(), for statistics panels; never affects the simulation.
+    struct StepTimes
+    {
+        double worldMs = 0.0;   ///< b2World::Step
+        double effectsMs = 0.0; ///< Effects::Step
+    };
+    const StepTimes& LastStepTimes() const { return m_times; }
+
     float Dt() const { return m_dt; }
     float Time() const { return static_cast<float>(m_steps) * m_dt; }
     std::uint64_t Steps() const { return m_steps; }
@@ -63,13 +74,23 @@ private:
     std::optional<Car> m_car;
     std::span<const DriveSegment> m_drive;
     std::optional<DriveInput> m_manual;
+    std::string m_sceneFile; // for diagnostics
+    std::uint64_t m_seed;
     float m_dt;
     std::uint64_t m_steps = 0;
+    StepTimes m_times;
 };
 
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
 /// {"contacts_max", "spawned"}}, "live_max", "spawned_inside_solid"}; rule names sorted, every type and
 /// rule present.
 std::string StatsJson(const Effects& effects, float hz);
+
+/// One line of the CLI's events file (JSON Lines, newline included): {"type" (scrape_began,
+/// scrape_changed, scrape_ended, impact), "step", "time" (s simulated when reported), "id", "pair"
+/// ("A+B", names sorted), "point": [x, y], "normal": [x, y], then "intensity", "tangential_speed",
+/// "normal_impulse" for scrapes, "reason" for ended scrapes, "approach_speed", "normal_impulse" for
+/// impacts}.
+std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz);
 
 } // namespace cfx

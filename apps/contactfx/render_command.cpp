@@ -1,0 +1,233 @@
+// contactfx render (SCENE.json | --demo) --out FILE: the simulation as pictures.
+//
+// Frame k shows the simulation at time k / fps (after round(k / fps * hz) steps), so the same flags
+// give the same pixels, and a single PNG at --time T is the frame a video would show at T. Everything
+// that can be checked is checked before the simulation runs: flags, the output's kind and folder, and
+// that ffmpeg is there for a video.
+#include "render_command.h"
+
+#include "cli_common.h"
+#include "contactfx/error.h"
+#include "contactfx/render/frame.h"
+#include "contactfx/render/frame_output.h"
+#include "contactfx/scene/text_file.h"
+#include "contactfx/sim/simulation.h"
+#include "progress.h"
+
+#include <box2d/b2_body.h>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+namespace cfx::cli
+{
+
+namespace
+{
+
+struct RenderOptions
+{
+    RunOptions run;
+    bool demo = false;
+    std::string out;
+    std::optional<double> time; ///< s; a single PNG of this moment
+    int width = 1280;           ///< px
+    int height = 720;           ///< px
+    double fps = 30.0;
+    std::string follow = "car"; ///< body the camera follows; empty or absent: the whole world
+    double view = 14.0;         ///< m across the picture when following
+};
+
+constexpr int kMaxSide = 8192;
+
+[[noreturn]] void Refuse(const std::string& flag, const std::string& message)
+{
+    throw InputError("<command line>", flag, message);
+}
+
+render::OutputKind CheckRenderOptions(const RenderOptions& options)
+{
+    if (options.demo == !options.run.scene.empty())
+    {
+        Refuse("scene",
+               options.demo ? "give either a scene file or --demo, not both" : "give a scene file or --demo");
+    }
+    CheckRunOptions(options.run);
+    if (options.width < 2 || options.width > kMaxSide)
+    {
+        Refuse("--width",
+               "expected a whole number of pixels in [2, 8192], found " + std::to_string(options.width));
+    }
+    if (options.height < 2 || options.height > kMaxSide)
+    {
+        Refuse("--height",
+               "expected a whole number of pixels in [2, 8192], found " + std::to_string(options.height));
+    }
+    if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 240.0)
+    {
+        Refuse("--fps", "expected a number in (0, 240], found " + std::to_string(options.fps));
+    }
+    if (!std::isfinite(options.view) || options.view <= 0.0 || options.view > 1e6)
+    {
+        Refuse("--view", "expected metres in (0, 1e6], found " + std::to_string(options.view));
+    }
+    render::OutputKind kind;
+    try
+    {
+        kind = render::ClassifyOutput(options.out);
+    }
+    catch (const std::invalid_argument& error)
+    {
+        Refuse("--out", error.what());
+    }
+    if (options.time)
+    {
+        if (!std::isfinite(*options.time) || *options.time < 0.0 || *options.time > 86400.0)
+        {
+            Refuse("--time", "expected a number in [0, 86400], found " + std::to_string(*options.time));
+        }
+        if (kind != render::OutputKind::png)
+        {
+            Refuse("--time", "only for one frame (--out FILE.png); a sequence or video covers --seconds");
+        }
+    }
+    if (kind == render::OutputKind::mp4 && (options.width % 2 != 0 || options.height % 2 != 0))
+    {
+        Refuse(options.width % 2 != 0 ? "--width" : "--height",
+               "an .mp4 needs an even width and height, found " + std::to_string(options.width) + "x" +
+                   std::to_string(options.height));
+    }
+    const std::filesystem::path folder = std::filesystem::path(options.out).parent_path();
+    std::error_code error;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+    {
+        Refuse("--out", "folder \"" + folder.string() + "\" does not exist");
+    }
+    if ((kind == render::OutputKind::mp4 || kind == render::OutputKind::gif) &&
+        render::FindProgram("ffmpeg").empty())
+    {
+        throw std::runtime_error("ffmpeg not found: install ffmpeg to write .mp4/.gif");
+    }
+    return kind;
+}
+
+int Render(RenderOptions options)
+{
+    const render::OutputKind kind = CheckRenderOptions(options);
+    std::span<const DriveSegment> drive;
+    if (options.demo)
+    {
+        options.run.scene = (ScenesDir() / "physics_driven_particles.json").string();
+        drive = TutorialDrive();
+    }
+    SimulationDef def;
+    def.scene = options.run.scene;
+    def.config = SelectConfig(options.run);
+    def.seed = options.run.seed;
+    def.hz = static_cast<float>(options.run.hz);
+    def.drive = drive;
+    Simulation simulation(def);
+
+    const b2Body* followed = nullptr;
+    if (!options.follow.empty())
+    {
+        if (const SceneBody* body = simulation.GetScene().FindBody(options.follow))
+        {
+            followed = body->body;
+        }
+    }
+    render::Camera camera = render::MakeCamera(options.width, options.height,
+                                               static_cast<float>(options.view), b2Vec2(0.0f, 0.0f));
+    // The followed body sits a little below the middle: what flies up stays in view.
+    const float lift = 0.2f * static_cast<float>(options.height) / camera.pixelsPerMetre;
+    constexpr float kSmoothing = 0.5f; // s: the view eases up and down, never sideways
+    if (followed != nullptr)
+    {
+        render::Follow(camera, *followed, lift);
+    }
+    else
+    {
+        render::FitWorld(camera, *simulation.GetScene().world);
+    }
+
+    const bool single = kind == render::OutputKind::png;
+    const double firstTime = single ? options.time.value_or(options.run.seconds) : 0.0;
+    const auto frames =
+        single ? 1LL : std::max(1LL, static_cast<long long>(std::llround(options.run.seconds * options.fps)));
+
+    render::CairoRenderer renderer(options.width, options.height);
+    render::FrameOptions look;
+    look.caption = (def.config.name.empty() ? std::string("custom") : def.config.name) + " effects";
+    render::FrameScratch scratch;
+    std::unique_ptr<render::FrameSink> sink =
+        render::MakeSink(options.out, kind, options.width, options.height, options.fps);
+    std::optional<Progress> progress;
+    if (frames > 1)
+    {
+        progress.emplace("render " + options.out, static_cast<std::uint64_t>(frames), "frames");
+    }
+    for (long long k = 0; k < frames; ++k)
+    {
+        const double time = single ? firstTime : static_cast<double>(k) / options.fps;
+        const auto steps = static_cast<std::uint64_t>(std::llround(time * options.run.hz));
+        while (simulation.Steps() < steps)
+        {
+            simulation.Step();
+            if (followed != nullptr)
+            {
+                render::FollowSmoothly(camera, *followed, lift, simulation.Dt(), kSmoothing);
+            }
+        }
+        render::RenderFrame(simulation.GetEffects(), simulation.Time(), camera, look, renderer, scratch);
+        sink->Write(renderer);
+        if (progress)
+        {
+            progress->Update(static_cast<std::uint64_t>(k + 1));
+        }
+    }
+    sink->Finish();
+    if (progress)
+    {
+        progress->Finish();
+    }
+    if (!options.run.stats.empty())
+    {
+        WriteTextFileAtomically(options.run.stats, StatsJson(simulation.GetEffects(), def.hz));
+    }
+    std::printf("contactfx render: wrote %s (%lld frame%s, %dx%d, %.2f s simulated)\n", options.out.c_str(),
+                frames, frames == 1 ? "" : "s", options.width, options.height,
+                static_cast<double>(simulation.Time()));
+    return kExitOk;
+}
+
+} // namespace
+
+void RegisterRenderCommand(CLI::App& app, int& result)
+{
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* render = app.add_subcommand(
+        "render",
+        "Pictures of a scene with effects: one PNG (--time), a PNG sequence, or an .mp4/.gif video");
+    render->add_option("scene", options->run.scene, "RUBE JSON scene (or --demo)");
+    render->add_flag("--demo", options->demo, "The tutorial scene with the demo's scripted drive");
+    render
+        ->add_option("--out", options->out,
+                     "FILE.png (one frame), DIR/frame_%04d.png (a sequence), FILE.mp4 or FILE.gif (ffmpeg)")
+        ->required();
+    AddRunOptions(*render, options->run, false);
+    render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)");
+    render->add_option("--width", options->width, "Image width, px")->capture_default_str();
+    render->add_option("--height", options->height, "Image height, px")->capture_default_str();
+    render->add_option("--fps", options->fps, "Frames per second of a sequence or video")
+        ->capture_default_str();
+    render
+        ->add_option("--follow", options->follow,
+                     "Body (by name) the camera follows; when the scene has none, the whole world shows")
+        ->capture_default_str();
+    render->add_option("--view", options->view, "Metres shown across the picture when following a body")
+        ->capture_default_str();
+    render->callback([options, &result] { result = Guarded([&] { return Render(*options); }); });
+}
+
+} // namespace cfx::cli

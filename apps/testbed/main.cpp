@@ -1,0 +1,67 @@
+// contactfx-testbed: look at contactfx's effects live, in the spirit of Box2D's testbed.
+//
+//   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]]
+//
+// Exit code 0 on success, 1 on any error (one line on stderr naming the flag or file).
+#include "app.h"
+#include "contactfx/error.h"
+#include "contactfx/sim/scenes.h"
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+namespace
+{
+
+constexpr int kExitError = 1;
+
+int Fail(const std::string& message)
+{
+    std::cerr << "contactfx-testbed: error: " << message << '\n';
+    return kExitError;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    cfx::testbed::Options options;
+    CLI::App app{"contactfx-testbed: contactfx's effects live (GLFW, OpenGL 3, Dear ImGui)"};
+    app.add_option("--scene", options.scene, "Scene to open: " + cfx::SceneNames())->capture_default_str();
+    app.add_option("--effects", options.effects, "Effects config JSON replacing the scene's");
+    CLI::Option* frames = app.add_option("--frames", options.frames,
+                                         "Run this many frames (one simulation step each) without "
+                                         "interaction, drawing the last few, then exit");
+    app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG");
+    app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::CallForHelp& help)
+    {
+        return app.exit(help);
+    }
+    catch (const CLI::ParseError& error)
+    {
+        return Fail(error.what());
+    }
+    try
+    {
+        cfx::testbed::CheckOptions(options, frames->count() > 0);
+        return cfx::testbed::RunTestbed(options);
+    }
+    catch (const cfx::InputError& error)
+    {
+        for (const cfx::Diagnostic& problem : error.Diagnostics())
+        {
+            std::cerr << "contactfx-testbed: error: " << problem.ToString() << '\n';
+        }
+    }
+    catch (const std::exception& error)
+    {
+        return Fail(error.what());
+    }
+    return kExitError;
+}

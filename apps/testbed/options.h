@@ -1,0 +1,29 @@
+// contactfx-testbed: the command line.
+//
+//   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]] [--hide-particles]
+//
+// Without --frames the testbed is interactive until its window closes. With --frames it runs N frames of
+// one simulation step each without waiting for input, saves the last one as PNG when --screenshot is
+// given, and exits 0. Bad flags are found before any window opens.
+#pragma once
+
+#include <string>
+
+namespace cfx::testbed
+{
+
+struct Options
+{
+    std::string scene = "tutorial"; ///< a registered scene (scenes.h)
+    std::string effects;            ///< effects config file replacing the scene's; empty: the scene's
+    int frames = 0;                 ///< frames to run without interaction, >= 1; 0: interactive
+    std::string screenshot;         ///< PNG of the last frame; needs frames
+    bool hideParticles = false;     ///< draw the scene without its particles
+};
+
+/// Throws InputError (file "<command line>", the flag as path) for an unknown scene, frames < 1 when
+/// given, a screenshot without frames or one whose folder is missing or not writable, or a path that
+/// is a folder.
+void CheckOptions(const Options& options, bool framesGiven);
+
+} // namespace cfx::testbed

@@ -1,0 +1,60 @@
+#include "panels.h"
+
+#include <imgui.h>
+
+namespace cfx::testbed
+{
+
+void StepTimeWindow::Record(const Simulation::StepTimes& times)
+{
+    m_times[m_next] = times;
+    m_next = (m_next + 1) % kCount;
+    m_count = std::min(m_count + 1, kCount);
+}
+
+Simulation::StepTimes StepTimeWindow::Mean() const
+{
+    Simulation::StepTimes mean;
+    if (m_count == 0)
+    {
+        return mean;
+    }
+    for (std::size_t i = 0; i < m_count; ++i)
+    {
+        mean.worldMs += m_times[i].worldMs;
+        mean.effectsMs += m_times[i].effectsMs;
+    }
+    mean.worldMs /= static_cast<double>(m_count);
+    mean.effectsMs /= static_cast<double>(m_count);
+    return mean;
+}
+
+void DrawPanels(Session& session, PanelState& state, int windowWidth, int windowHeight, int width)
+{
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(windowWidth - width), 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width), static_cast<float>(windowHeight)));
+    constexpr ImGuiWindowFlags kFixed =
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    if (ImGui::Begin("contactfx testbed", nullptr, kFixed))
+    {
+        if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen))
+        {
+            ScenesPanel(session, state.toggles, state.sceneError);
+        }
+        if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen))
+        {
+            StatisticsPanel(session, state.times, state.frameMs);
+        }
+        if (ImGui::CollapsingHeader("Events", ImGuiTreeNodeFlags_DefaultOpen))
+        {
+            EventsPanel(session);
+        }
+        if (ImGui::CollapsingHeader("Effects"))
+        {
+            EffectsPanel(session, state.editor);
+        }
+    }
+    ImGui::End();
+}
+
+} // namespace cfx::testbed

@@ -1,0 +1,70 @@
+// contactfx-testbed: the panels (Dear ImGui), all in one column right of the world view.
+//
+//   Scenes      the registered scenes; pause, single step, restart; the car's keys; what is drawn
+//   Statistics  ms per step for the world and for the effects, contacts per rule, particles by type
+//   Effects     materials, particle types, pair rules and budget, edited live and saved as JSON
+//
+// Panels only read and change the Session and their own state; they never step the simulation.
+#pragma once
+
+#include "contactfx/config.h"
+#include "effects_editor.h"
+#include "session.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cfx::testbed
+{
+
+/// What the world view draws.
+struct DrawToggles
+{
+    bool shapes = true;
+    bool joints = true;
+    bool particles = true;
+};
+
+/// Recent step times, for averages that do not flicker.
+class StepTimeWindow
+{
+public:
+    void Record(const Simulation::StepTimes& times);
+    /// Mean over the recorded steps (at most the last kCount), ms.
+    Simulation::StepTimes Mean() const;
+
+private:
+    static constexpr std::size_t kCount = 60;
+    std::array<Simulation::StepTimes, kCount> m_times{};
+    std::size_t m_next = 0;
+    std::size_t m_count = 0;
+};
+
+/// Restarts the scene; a failure (its file went bad meanwhile) goes to `error`.
+void RestartScene(Session& session, std::string& error);
+
+/// Scene list, controls and draw toggles. Errors of opening a scene go to `error`.
+void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error);
+
+/// Step times, contacts per rule and particles by type of the running simulation.
+void StatisticsPanel(const Session& session, const StepTimeWindow& times, float frameMs);
+/// The recent effect events, newest first.
+void EventsPanel(const Session& session);
+
+/// Edits a draft of the effects configuration; a finished edit of a valid draft replaces the
+/// simulation's effects at once. Save writes the draft as an effects config JSON file.
+void EffectsPanel(Session& session, EffectsEditor& editor);
+
+/// The whole panel column, `width` px wide on the right of a `windowWidth` x `windowHeight` window.
+struct PanelState
+{
+    DrawToggles toggles;
+    StepTimeWindow times;
+    EffectsEditor editor;
+    std::string sceneError;
+    float frameMs = 0.0f;
+};
+void DrawPanels(Session& session, PanelState& state, int windowWidth, int windowHeight, int width);
+
+} // namespace cfx::testbed

@@ -1,0 +1,83 @@
+#include "panels.h"
+
+#include <imgui.h>
+
+namespace cfx::testbed
+{
+
+void RestartScene(Session& session, std::string& error)
+{
+    try
+    {
+        session.Restart();
+        error.clear();
+    }
+    catch (const InputError& problem)
+    {
+        error = problem.what();
+    }
+}
+
+void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
+{
+    for (const SceneEntry& entry : Scenes())
+    {
+        const bool current = &entry == &session.Entry();
+        if (ImGui::Selectable(std::string(entry.name).c_str(), current) && !current)
+        {
+            try
+            {
+                session.Open(entry);
+                error.clear();
+            }
+            catch (const InputError& problem)
+            {
+                error = problem.what();
+            }
+        }
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::SetTooltip("%s", std::string(entry.title).c_str());
+        }
+    }
+    ImGui::TextWrapped("%s", std::string(session.Entry().title).c_str());
+    if (!error.empty())
+    {
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error.c_str());
+    }
+
+    ImGui::Separator();
+    ImGui::Checkbox("Pause (p)", &session.paused);
+    ImGui::SameLine();
+    if (ImGui::Button("Step (o)"))
+    {
+        session.paused = true;
+        session.stepOnce = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Restart (r)"))
+    {
+        RestartScene(session, error);
+    }
+    if (session.Sim().GetCar())
+    {
+        ImGui::Checkbox("Follow the car (f)", &session.followCar);
+        ImGui::SameLine();
+        bool fourWheel = session.FourWheelDrive();
+        if (ImGui::Checkbox("4WD (4)", &fourWheel))
+        {
+            session.ToggleFourWheelDrive();
+        }
+        ImGui::TextUnformatted(session.Manual() ? "Driving: keys a / d, s brakes"
+                                                : "Driving: the scene's script (a, s, d take over)");
+    }
+    ImGui::Checkbox("Shapes", &toggles.shapes);
+    ImGui::SameLine();
+    ImGui::Checkbox("Joints", &toggles.joints);
+    ImGui::SameLine();
+    ImGui::Checkbox("Particles", &toggles.particles);
+    ImGui::TextDisabled("Left drag: move bodies. Right drag, arrows: pan.");
+    ImGui::TextDisabled("Wheel, z / x: zoom. Home: reset the view.");
+}
+
+} // namespace cfx::testbed

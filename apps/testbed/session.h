@@ -1,0 +1,84 @@
+// contactfx-testbed: the scene on show and everything the user does to it.
+//
+// Holds the registered scene's simulation, its camera, the driver's keys, pause and single step, the
+// mouse joint, and the effects configuration in force. Opening another scene or changing the
+// configuration never leaves a half-made state: on bad input the session keeps what it had and
+// reports the error. One step of the simulation per Advance(), so N frames are N steps whatever the
+// frame rate (the screenshot mode's determinism).
+#pragma once
+
+#include "contactfx/render/camera.h"
+#include "contactfx/sim/scenes.h"
+#include "event_log.h"
+#include "mouse_drag.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace cfx::testbed
+{
+
+class Session
+{
+public:
+    explicit Session(std::filesystem::path scenesDir) : m_scenesDir(std::move(scenesDir)) {}
+    ~Session();
+
+    /// Opens a registered scene with `config`, or with the scene's own effects when none is given.
+    /// Throws InputError and keeps the current scene on bad input.
+    void Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config = std::nullopt);
+    /// Opens the current scene again from its file, with the effects configuration in force.
+    void Restart();
+    /// Replaces the effects configuration, keeping the world (Simulation::ReplaceEffects).
+    void ApplyConfig(const EffectsConfig& config);
+
+    /// One simulation step unless paused; when paused, one step if a single step was asked for.
+    void Advance();
+    /// The view rectangle changed to `width` x `height` px: keeps the centre and the metres shown
+    /// vertically.
+    void Resize(int width, int height);
+    /// Puts the camera where the scene says (centre, height), for a view of `width` x `height` px.
+    void ResetView(int width, int height);
+
+    // The driver's keys. Pressing any of a, s, d takes the car from its script.
+    void SetKeys(bool left, bool right, bool brake);
+    void ToggleFourWheelDrive() { m_input.fourWheelDrive = !m_input.fourWheelDrive; }
+    bool FourWheelDrive() const { return m_input.fourWheelDrive; }
+    bool Manual() const { return m_manual; }
+
+    /// Zooms by `factor` (> 1 shows more) about the world point `anchor`, which stays put on screen.
+    void Zoom(float factor, b2Vec2 anchor);
+    /// Moves the view by `pixels` (screen px, y down).
+    void Pan(b2Vec2 pixels);
+
+    MouseDrag& Drag() { return m_drag; }
+    Simulation& Sim() { return *m_simulation; }
+    const Simulation& Sim() const { return *m_simulation; }
+    const SceneEntry& Entry() const { return *m_entry; }
+    const render::Camera& Camera() const { return m_camera; }
+    /// Effect events of the recent steps (cleared when a simulation is opened).
+    const EventLog& Events() const { return m_events; }
+    /// Changes each time a simulation is opened (another scene, a restart).
+    std::uint64_t Generation() const { return m_generation; }
+
+    bool paused = false;
+    bool stepOnce = false;
+    bool followCar = false;
+
+private:
+    std::filesystem::path m_scenesDir;
+    const SceneEntry* m_entry = nullptr;
+    std::unique_ptr<Simulation> m_simulation;
+    render::Camera m_camera;
+    MouseDrag m_drag;
+    EventLog m_events;
+    DriveInput m_input;
+    bool m_manual = false;
+    std::uint64_t m_generation = 0;
+    float m_followLift = 0.0f; // m: the scene's view centre above where render::Follow centres at the start
+};
+
+} // namespace cfx::testbed

@@ -1,0 +1,98 @@
+// contactfx_render: where rendered frames go.
+//
+// One PNG file, a numbered PNG sequence, or a video that ffmpeg encodes from raw frames piped to its
+// standard input. Every kind leaves either complete output or nothing: PNG files are written to a
+// temporary name and renamed; a sequence that fails midway removes the frames it wrote; ffmpeg writes
+// to a temporary file that is renamed only when it exits with success.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cfx::render
+{
+
+class CairoRenderer;
+
+/// What an output path asks for.
+enum class OutputKind
+{
+    png,         ///< one frame: FILE.png
+    pngSequence, ///< numbered frames: a .png path with one printf number, e.g. frames/frame_%04d.png
+    mp4,         ///< H.264 video through ffmpeg
+    gif,         ///< animated GIF through ffmpeg
+};
+
+/// The kind of `path` by its extension (case-insensitive) and, for .png, a "%d" or "%0Nd" (N in 1..9)
+/// in the file name. Throws std::invalid_argument with a one-line reason for any other extension or
+/// for a malformed pattern (more than one number, other % conversions, a pattern in a folder name).
+OutputKind ClassifyOutput(const std::filesystem::path& path);
+
+/// The file of frame `index` of a sequence pattern ("frame_%04d.png", 7 -> "frame_0007.png").
+std::filesystem::path SequenceFile(const std::filesystem::path& pattern, long long index);
+
+/// The full path of `program` on $PATH, or an empty path when it is not there (or not executable).
+std::filesystem::path FindProgram(const std::string& program);
+
+/// Receives frames one after another. Finish() completes the output; destroying a sink that was not
+/// finished removes everything it wrote.
+class FrameSink
+{
+public:
+    virtual ~FrameSink() = default;
+    virtual void Write(const CairoRenderer& frame) = 0;
+    virtual void Finish() = 0;
+};
+
+/// Writes frame i to SequenceFile(pattern, first + i), each file atomically.
+class PngSequenceSink final : public FrameSink
+{
+public:
+    explicit PngSequenceSink(std::filesystem::path pattern, long long first = 0);
+    ~PngSequenceSink() override;
+    void Write(const CairoRenderer& frame) override;
+    void Finish() override { m_finished = true; }
+    const std::vector<std::filesystem::path>& Files() const { return m_written; }
+
+private:
+    std::filesystem::path m_pattern;
+    long long m_next;
+    std::vector<std::filesystem::path> m_written;
+    bool m_finished = false;
+};
+
+/// Pipes frames as raw pixels (Cairo's native-endian ARGB) into ffmpeg, which writes an MP4 (H.264, yuv420p:
+/// width and height must be even) or a GIF (a palette per frame) at `fps` frames per second.
+class VideoSink final : public FrameSink
+{
+public:
+    /// Throws std::runtime_error "ffmpeg not found: install ffmpeg to write .mp4/.gif" when ffmpeg is not
+    /// on $PATH, std::invalid_argument for odd MP4 sizes, InputError naming `file` when ffmpeg cannot
+    /// start. While the sink lives, SIGPIPE is ignored (so a dying ffmpeg shows as a write error, not a
+    /// killed process); the previous disposition is restored after.
+    VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps);
+    ~VideoSink() override;
+    /// Throws InputError naming the file when ffmpeg stopped taking frames.
+    void Write(const CairoRenderer& frame) override;
+    /// Waits for ffmpeg; throws InputError naming the file (and leaves none) when it failed.
+    void Finish() override;
+
+private:
+    void Abort();
+
+    std::filesystem::path m_file;
+    std::filesystem::path m_temporary;
+    int m_width;
+    int m_height;
+    std::FILE* m_pipe = nullptr;
+    void (*m_previousSigpipe)(int) = nullptr;
+};
+
+/// A sink for `kind` writing to `path`.
+std::unique_ptr<FrameSink> MakeSink(const std::filesystem::path& path, OutputKind kind, int width, int height,
+                                    double fps);
+
+} // namespace cfx::render

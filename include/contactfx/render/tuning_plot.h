@@ -1,0 +1,76 @@
+// contactfx_render: a plot for tuning thresholds and rates.
+//
+// Where does an effect start and stop? The plot answers with one panel per rule: the rule's largest
+// sample intensity over time against its threshold (a dashed line), and the particles it emitted per
+// second, with the stretches where it emitted shaded. A recorder samples Effects::Stats() after each
+// step; it keeps at most a fixed number of time buckets (each the maximum intensity and the particle
+// count of its steps), doubling the bucket length when full, so a run of any length fits in bounded
+// memory.
+#pragma once
+
+#include "contactfx/config.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cfx
+{
+struct EffectsStats;
+}
+
+namespace cfx::render
+{
+
+class TuningRecorder
+{
+public:
+    /// For a configuration with `ruleCount` rules; keeps at most `maxBuckets` (>= 2, rounded up to an
+    /// even number) time buckets.
+    explicit TuningRecorder(std::size_t ruleCount, std::size_t maxBuckets = 1200);
+
+    /// Takes one step's stats (rules[i].intensityMaxLastStep, spawnedLastStep); `dt` in seconds (> 0).
+    void Record(const EffectsStats& stats, float dt);
+
+    std::size_t RuleCount() const { return m_rules; }
+    /// Completed and current buckets.
+    std::size_t BucketCount() const { return m_bucketCount; }
+    /// s covered by each bucket (the last one may be partly filled).
+    double BucketSeconds() const { return m_bucketSeconds; }
+    double Seconds() const { return m_seconds; }
+    /// Largest sample intensity of rule `rule` in bucket `bucket`.
+    float Intensity(std::size_t bucket, std::size_t rule) const
+    {
+        return m_intensity[bucket * m_rules + rule];
+    }
+    /// Particles rule `rule` emitted in bucket `bucket`.
+    std::uint64_t Spawned(std::size_t bucket, std::size_t rule) const
+    {
+        return m_spawned[bucket * m_rules + rule];
+    }
+    /// s of simulated time in bucket `bucket`.
+    double Duration(std::size_t bucket) const { return m_duration[bucket]; }
+
+private:
+    void Halve();
+
+    std::size_t m_rules;
+    std::size_t m_maxBuckets;
+    std::size_t m_bucketCount = 0;
+    std::size_t m_stepsPerBucket = 1;
+    std::size_t m_stepsInLast = 0;
+    double m_bucketSeconds = 0.0;
+    double m_seconds = 0.0;
+    std::vector<float> m_intensity;       // bucket-major
+    std::vector<std::uint64_t> m_spawned; // bucket-major
+    std::vector<double> m_duration;       // per bucket
+};
+
+/// The plot of `recorder`'s run of `config` as PNG bytes: `width` x (header + one panel per rule) px.
+/// `title` heads the picture. Throws std::invalid_argument when the recorder and the configuration
+/// disagree on the rule count.
+std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& config,
+                          const std::string& title, int width = 1200, int panelHeight = 170);
+
+} // namespace cfx::render

@@ -1,0 +1,115 @@
+// contactfx internal: the uniform grid (see grid.h). Built by a counting sort: count per cell, prefix
+// sum, fill, so the items of a cell keep the boxes' order and the build is deterministic.
+#include "particles/grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cfx::particles
+{
+
+namespace
+{
+
+constexpr float kMinCell = 1.0f / 64.0f; // m
+constexpr std::size_t kMinCells = 1024;
+constexpr std::size_t kCellsPerBox = 16;
+constexpr float kCellPerExtent = 1.0f;
+
+} // namespace
+
+int Grid::Column(float x) const
+{
+    const float cell = (x - m_lower.x) * m_inverseCell;
+    return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_columns - 1);
+}
+
+int Grid::Row(float y) const
+{
+    const float cell = (y - m_lower.y) * m_inverseCell;
+    return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_rows - 1);
+}
+
+void Grid::Build(std::span<const b2AABB> boxes)
+{
+    m_items.clear();
+    m_columns = 0;
+    m_rows = 0;
+    if (boxes.empty())
+    {
+        m_cellStart.assign(1, 0);
+        return;
+    }
+    b2AABB bounds = boxes[0];
+    m_scratch.clear();
+    for (const b2AABB& box : boxes)
+    {
+        bounds.Combine(box);
+        const b2Vec2 extent = box.upperBound - box.lowerBound;
+        m_scratch.push_back(std::max(extent.x, extent.y));
+    }
+    auto middle = m_scratch.begin() + static_cast<std::ptrdiff_t>(m_scratch.size() / 2);
+    std::nth_element(m_scratch.begin(), middle, m_scratch.end());
+    float cell = std::max(kCellPerExtent * *middle, kMinCell);
+    const b2Vec2 size = bounds.upperBound - bounds.lowerBound;
+    const std::size_t maxCells = std::max(kMinCells, kCellsPerBox * boxes.size());
+    for (;;)
+    {
+        const double columns = std::floor(static_cast<double>(size.x) / cell) + 1.0;
+        const double rows = std::floor(static_cast<double>(size.y) / cell) + 1.0;
+        if (columns * rows <= static_cast<double>(maxCells))
+        {
+            m_columns = static_cast<int>(columns);
+            m_rows = static_cast<int>(rows);
+            break;
+        }
+        cell *= 1.5f;
+    }
+    m_lower = bounds.lowerBound;
+    m_upper = bounds.upperBound;
+    m_cellSize = cell;
+    m_inverseCell = 1.0f / cell;
+
+    const std::size_t cells = static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows);
+    m_cellStart.assign(cells + 1, 0);
+    for (const b2AABB& box : boxes)
+    {
+        for (int y = Row(box.lowerBound.y); y <= Row(box.upperBound.y); ++y)
+        {
+            for (int x = Column(box.lowerBound.x); x <= Column(box.upperBound.x); ++x)
+            {
+                ++m_cellStart[static_cast<std::size_t>(y * m_columns + x) + 1];
+            }
+        }
+    }
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+        m_cellStart[c + 1] += m_cellStart[c];
+    }
+    m_items.resize(m_cellStart[cells]);
+    // Fill using the row starts as cursors, then shift them back.
+    for (std::uint32_t index = 0; index < boxes.size(); ++index)
+    {
+        const b2AABB& box = boxes[index];
+        for (int y = Row(box.lowerBound.y); y <= Row(box.upperBound.y); ++y)
+        {
+            for (int x = Column(box.lowerBound.x); x <= Column(box.upperBound.x); ++x)
+            {
+                m_items[m_cellStart[static_cast<std::size_t>(y * m_columns + x)]++] = index;
+            }
+        }
+    }
+    for (std::size_t c = cells; c > 0; --c)
+    {
+        m_cellStart[c] = m_cellStart[c - 1];
+    }
+    m_cellStart[0] = 0;
+}
+
+std::size_t Grid::Bytes() const
+{
+    return (m_cellStart.capacity() + m_items.capacity()) * sizeof(std::uint32_t) +
+           m_scratch.capacity() * sizeof(float);
+}
+
+} // namespace cfx::particles

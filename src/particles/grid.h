@@ -1,0 +1,77 @@
+// contactfx internal: a uniform grid of boxes, for finding the shapes near a particle in O(1).
+//
+// Box2D's dynamic tree answers "what overlaps this box" in O(log n) with pointer chasing and a virtual
+// callback per hit; a particle system asks that question for every particle every step, and its
+// answers rarely change. A uniform grid over the shapes' bounds, stored as compressed rows (the items of
+// cell c are items[cellStart[c] .. cellStart[c + 1])), answers it with two float-to-int conversions and a
+// contiguous read. An item is listed in every cell its box overlaps. Boxes outside the grid's bounds
+// overlap nothing, so a particle far from all geometry costs one box test.
+//
+// Build allocates only when the grid needs more room than any earlier build; Query is const and safe
+// from any number of threads at once.
+#pragma once
+
+#include <box2d/b2_collision.h>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace cfx::particles
+{
+
+class Grid
+{
+public:
+    /// Lists every box in the cells it overlaps. The cell size follows the boxes' median extent,
+    /// grown until there are at most max(1024, 16 * boxes) cells.
+    void Build(std::span<const b2AABB> boxes);
+
+    /// Calls visit(item) for the items listed in the cells `box` overlaps, cell by cell in row order;
+    /// an item overlapping several of those cells is visited once per cell.
+    template <typename Visit> void Query(const b2AABB& box, Visit&& visit) const
+    {
+        if (m_items.empty() || box.upperBound.x < m_lower.x || box.upperBound.y < m_lower.y ||
+            box.lowerBound.x > m_upper.x || box.lowerBound.y > m_upper.y)
+        {
+            return;
+        }
+        const int x0 = Column(box.lowerBound.x);
+        const int x1 = Column(box.upperBound.x);
+        const int y0 = Row(box.lowerBound.y);
+        const int y1 = Row(box.upperBound.y);
+        for (int y = y0; y <= y1; ++y)
+        {
+            const std::uint32_t* start = m_cellStart.data() + y * m_columns;
+            for (int x = x0; x <= x1; ++x)
+            {
+                for (std::uint32_t k = start[x]; k < start[x + 1]; ++k)
+                {
+                    visit(m_items[k]);
+                }
+            }
+        }
+    }
+
+    bool Empty() const { return m_items.empty(); }
+    float CellSize() const { return m_cellSize; }
+    int Columns() const { return m_columns; }
+    int Rows() const { return m_rows; }
+    /// Heap bytes held.
+    std::size_t Bytes() const;
+
+private:
+    int Column(float x) const;
+    int Row(float y) const;
+
+    b2Vec2 m_lower{0.0f, 0.0f};
+    b2Vec2 m_upper{0.0f, 0.0f};
+    float m_cellSize = 1.0f;
+    float m_inverseCell = 1.0f;
+    int m_columns = 0;
+    int m_rows = 0;
+    std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1
+    std::vector<std::uint32_t> m_items;
+    std::vector<float> m_scratch;
+};
+
+} // namespace cfx::particles

@@ -1,0 +1,65 @@
+// contactfx internal: one step of a contiguous run of particles, the loop every step spends its time in.
+//
+// A run is a range of logical indices (spawn order) of the ring; each particle in it is advanced by
+// itself, reading only its own slot, its type's step constants and the (read-only) world geometry, so
+// runs can go to different threads and the result does not depend on how the particles were split.
+// The living are written back in order at the start of the run (the dead are squeezed out as the loop
+// goes, in the same pass), and the caller joins the runs.
+#pragma once
+
+#include "particles/world_geometry.h"
+
+#include <cstdint>
+#include <vector>
+
+class b2Body;
+
+namespace cfx::particles
+{
+
+/// The ring of particle arrays. Slot of logical index i: (head + i) mod capacity.
+struct PoolArrays
+{
+    float* positionX;
+    float* positionY;
+    float* velocityX;
+    float* velocityY;
+    float* life;
+    std::uint16_t* type;
+    std::uint8_t* resting; ///< 1: (position, zero velocity) is a fixed point of the static sweep
+    b2Body** body;         ///< null when no type is body-backed
+    std::uint32_t capacity;
+    std::uint32_t head;
+
+    std::uint32_t Slot(std::uint32_t i) const
+    {
+        const std::uint32_t slot = head + i;
+        return slot >= capacity ? slot - capacity : slot;
+    }
+};
+
+/// What a particle type does in this step (dt folded in).
+struct TypeStep
+{
+    b2Vec2 gravityDelta; ///< velocity added by gravity this step (m/s)
+    float damping;       ///< velocity factor of drag, 1 / (1 + dt * drag)
+    float lifeLoss;      ///< life lost this step
+    ParticleSide side;
+    bool collide;
+    bool bodyBacked;
+};
+
+/// Advances logical indices [begin, end) by `dt` seconds; pool particles collide with `geometry` when
+/// it is not null. `trustResting`: dt, gravity and the static geometry are the same as in the previous
+/// step, so a particle marked resting would come out of the static sweep exactly as it went in, and the
+/// sweep is skipped (the result is the same bits either way). Returns how many live; they are now at [begin,
+/// begin + kept) in order. Bodies of body-backed particles that died are appended to `dead` (which must have
+/// room: no allocation) for the caller to destroy on its thread.
+std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
+                           float dt, bool trustResting, std::uint32_t begin, std::uint32_t end,
+                           std::vector<b2Body*>& dead);
+
+/// Moves `count` particles from logical index `from` to `to` (to < from), keeping their order.
+void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count);
+
+} // namespace cfx::particles

@@ -1,0 +1,50 @@
+// contactfx internal: a few persistent threads that run the parts of one job.
+//
+// The particle step splits its particles into contiguous ranges, one per thread. Starting a thread per
+// step would cost more than the work at the sizes where splitting pays, so the helper threads are
+// started once, on first use, and sleep on a condition variable between jobs. Run() gives part 0 to the
+// calling thread and parts 1 .. n-1 to the helpers, and returns when all are done. No allocation per
+// job (a plain function pointer and context, no std::function).
+//
+// Threading: Run is called from one thread at a time (the one that owns the particle system).
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace cfx::particles
+{
+
+class Workers
+{
+public:
+    using Task = void (*)(void* context, unsigned part);
+
+    Workers() = default;
+    ~Workers();
+    Workers(const Workers&) = delete;
+    Workers& operator=(const Workers&) = delete;
+
+    /// Runs task(context, part) for part in [0, parts); parts - 1 helper threads are started on first
+    /// need and kept.
+    void Run(unsigned parts, Task task, void* context);
+
+private:
+    void Loop(unsigned part);
+
+    std::vector<std::thread> m_threads;
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::condition_variable m_done;
+    std::uint64_t m_generation = 0;
+    unsigned m_parts = 0;
+    unsigned m_pending = 0;
+    bool m_stop = false;
+    Task m_task = nullptr;
+    void* m_context = nullptr;
+};
+
+} // namespace cfx::particles

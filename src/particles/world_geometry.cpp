@@ -1,0 +1,327 @@
+// contactfx internal: the static cache and the per-step walk of the world (see world_geometry.h).
+#include "particles/world_geometry.h"
+
+#include "contactfx/spawn.h"
+
+#include <algorithm>
+#include <bit>
+#include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_edge_shape.h>
+#include <box2d/b2_fixture.h>
+#include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_world.h>
+
+namespace cfx::particles
+{
+
+namespace
+{
+
+// FNV-1a over 64-bit words.
+class Signature
+{
+public:
+    void Add(std::uint64_t word) { m_hash = (m_hash ^ word) * 0x100000001b3ULL; }
+    void Add(const void* pointer)
+    {
+        Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(pointer)));
+    }
+    void Add(float value) { Add(static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value))); }
+    void Add(b2Vec2 value)
+    {
+        Add((static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value.x)) << 32u) |
+            std::bit_cast<std::uint32_t>(value.y));
+    }
+    /// Never 0, so that 0 can mean "invalid".
+    std::uint64_t Value() const { return m_hash == 0 ? 1 : m_hash; }
+
+private:
+    std::uint64_t m_hash = 0xcbf29ce484222325ULL;
+};
+
+void AddStaticBody(Signature& signature, const b2Body& body)
+{
+    signature.Add(&body);
+    signature.Add(body.GetPosition());
+    signature.Add(body.GetAngle());
+    for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        signature.Add(fixture);
+        const b2Filter& filter = fixture->GetFilterData();
+        signature.Add((static_cast<std::uint64_t>(fixture->GetType()) << 48u) |
+                      (static_cast<std::uint64_t>(fixture->IsSensor()) << 40u) |
+                      (static_cast<std::uint64_t>(filter.categoryBits) << 16u) | filter.maskBits);
+        signature.Add(fixture->GetFriction());
+        signature.Add(fixture->GetRestitution());
+        signature.Add(fixture->GetRestitutionThreshold());
+        const int children = fixture->GetShape()->GetChildCount();
+        signature.Add(static_cast<std::uint64_t>(children));
+        for (int child = 0; child < children; ++child)
+        {
+            const b2AABB& box = fixture->GetAABB(child);
+            signature.Add(box.lowerBound);
+            signature.Add(box.upperBound);
+        }
+    }
+}
+
+b2AABB BoxOf(b2Vec2 a, b2Vec2 b)
+{
+    b2AABB box;
+    box.lowerBound = b2Min(a, b);
+    box.upperBound = b2Max(a, b);
+    return box;
+}
+
+constexpr std::uint32_t kRecent = 8;
+
+SurfaceMaterial MaterialOf(const b2Fixture& fixture)
+{
+    return SurfaceMaterial{fixture.GetFriction(), fixture.GetRestitution(),
+                           fixture.GetRestitutionThreshold()};
+}
+
+} // namespace
+
+void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
+{
+    Signature signature;
+    m_movingMaterials.clear();
+    m_movingBodies.clear();
+    m_movingShapes.clear();
+    m_movingBoxes.clear();
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        if (!body->IsEnabled())
+        {
+            continue;
+        }
+        if (body->GetType() == b2_staticBody)
+        {
+            AddStaticBody(signature, *body);
+            continue;
+        }
+        if (ignore != nullptr && ignore->Ignore(body))
+        {
+            continue;
+        }
+        const auto bodyIndex = static_cast<std::uint32_t>(m_movingBodies.size());
+        bool any = false;
+        for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+        {
+            if (fixture->IsSensor())
+            {
+                continue;
+            }
+            const auto material = static_cast<std::uint32_t>(m_movingMaterials.size());
+            m_movingMaterials.push_back(MaterialOf(*fixture));
+            const b2Filter& filter = fixture->GetFilterData();
+            const int children = fixture->GetShape()->GetChildCount();
+            for (int child = 0; child < children; ++child)
+            {
+                m_movingShapes.push_back(MovingShape{fixture->GetShape(), child, bodyIndex, material,
+                                                     filter.categoryBits, filter.maskBits});
+                m_movingBoxes.push_back(fixture->GetAABB(child));
+            }
+            any = true;
+        }
+        if (!any)
+        {
+            continue;
+        }
+        MovingBody moving;
+        moving.after = body->GetTransform();
+        moving.center = body->GetWorldCenter();
+        moving.velocity = body->GetLinearVelocity();
+        moving.angularVelocity = body->GetAngularVelocity();
+        // Box2D moved the centre by dt * v and the angle by dt * w: undo that for the start pose.
+        moving.before.q.Set(body->GetAngle() - dt * moving.angularVelocity);
+        const b2Vec2 centerBefore = moving.center - dt * moving.velocity;
+        moving.before.p = centerBefore - b2Mul(moving.before.q, body->GetLocalCenter());
+        m_movingBodies.push_back(moving);
+    }
+    if (signature.Value() != m_signature)
+    {
+        BuildStatic(world);
+        m_signature = signature.Value();
+    }
+    m_movingGrid.Build(m_movingBoxes);
+}
+
+void WorldGeometry::BuildStatic(b2World& world)
+{
+    ++m_builds;
+    m_materials.clear();
+    m_primitives.clear();
+    m_primitiveBoxes.clear();
+    m_polygonVertices.clear();
+    m_polygonNormals.clear();
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        if (!body->IsEnabled() || body->GetType() != b2_staticBody)
+        {
+            continue;
+        }
+        const b2Transform& xf = body->GetTransform();
+        for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+        {
+            if (fixture->IsSensor())
+            {
+                continue;
+            }
+            Primitive primitive{};
+            primitive.material = static_cast<std::uint32_t>(m_materials.size());
+            primitive.categoryBits = fixture->GetFilterData().categoryBits;
+            primitive.maskBits = fixture->GetFilterData().maskBits;
+            m_materials.push_back(MaterialOf(*fixture));
+            const b2Shape* shape = fixture->GetShape();
+            switch (shape->GetType())
+            {
+            case b2Shape::e_circle:
+            {
+                const auto* circle = static_cast<const b2CircleShape*>(shape);
+                primitive.kind = Kind::circle;
+                primitive.a = b2Mul(xf, circle->m_p);
+                primitive.scalar = circle->m_radius;
+                const b2Vec2 extent(circle->m_radius, circle->m_radius);
+                m_primitives.push_back(primitive);
+                m_primitiveBoxes.push_back(BoxOf(primitive.a - extent, primitive.a + extent));
+                break;
+            }
+            case b2Shape::e_polygon:
+            {
+                const auto* polygon = static_cast<const b2PolygonShape*>(shape);
+                primitive.kind = Kind::polygon;
+                primitive.first = static_cast<std::uint32_t>(m_polygonVertices.size());
+                primitive.count = static_cast<std::uint8_t>(polygon->m_count);
+                b2AABB box = BoxOf(b2Mul(xf, polygon->m_vertices[0]), b2Mul(xf, polygon->m_vertices[0]));
+                for (int i = 0; i < polygon->m_count; ++i)
+                {
+                    const b2Vec2 vertex = b2Mul(xf, polygon->m_vertices[i]);
+                    m_polygonVertices.push_back(vertex);
+                    m_polygonNormals.push_back(b2Mul(xf.q, polygon->m_normals[i]));
+                    box.lowerBound = b2Min(box.lowerBound, vertex);
+                    box.upperBound = b2Max(box.upperBound, vertex);
+                }
+                m_primitives.push_back(primitive);
+                m_primitiveBoxes.push_back(box);
+                break;
+            }
+            case b2Shape::e_edge:
+            case b2Shape::e_chain:
+            {
+                const int children = shape->GetChildCount();
+                for (int child = 0; child < children; ++child)
+                {
+                    b2EdgeShape edge;
+                    if (shape->GetType() == b2Shape::e_edge)
+                    {
+                        edge = *static_cast<const b2EdgeShape*>(shape);
+                    }
+                    else
+                    {
+                        static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+                    }
+                    const b2Vec2 v1 = b2Mul(xf, edge.m_vertex1);
+                    const b2Vec2 v2 = b2Mul(xf, edge.m_vertex2);
+                    if (v1 == v2)
+                    {
+                        continue;
+                    }
+                    const Segment segment = MakeSegment(v1, v2, edge.m_oneSided);
+                    primitive.kind = Kind::segment;
+                    primitive.a = segment.v1;
+                    primitive.b = segment.v2;
+                    primitive.normal = segment.normal;
+                    primitive.scalar = segment.invLengthSq;
+                    primitive.oneSided = segment.oneSided;
+                    m_primitives.push_back(primitive);
+                    m_primitiveBoxes.push_back(BoxOf(v1, v2));
+                }
+                break;
+            }
+            default:
+                break;
+            }
+        }
+    }
+    m_staticGrid.Build(m_primitiveBoxes);
+}
+
+bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result) const
+{
+    const float r = in.radius;
+    b2AABB query = BoxOf(in.p, in.p + in.d);
+    query.lowerBound -= b2Vec2(r, r);
+    query.upperBound += b2Vec2(r, r);
+    bool found = false;
+    // A primitive spanning several of the query's cells is listed in each: test it once. The few most
+    // recent ones suffice, since a cell's neighbour lists mostly the same primitives.
+    std::uint32_t recent[kRecent];
+    std::uint32_t recentCount = 0;
+    m_staticGrid.Query(
+        query,
+        [&](std::uint32_t index)
+        {
+            for (std::uint32_t k = 0; k < recentCount && k < kRecent; ++k)
+            {
+                if (recent[k] == index)
+                {
+                    return;
+                }
+            }
+            recent[recentCount++ % kRecent] = index;
+            const Primitive& primitive = m_primitives[index];
+            if ((primitive.maskBits & side.categoryBits) == 0 ||
+                (primitive.categoryBits & side.maskBits) == 0)
+            {
+                return;
+            }
+            bool hit = false;
+            switch (primitive.kind)
+            {
+            case Kind::segment:
+                hit = SweepSegment(
+                    in,
+                    Segment{primitive.a, primitive.b, primitive.normal, primitive.scalar, primitive.oneSided},
+                    result.touch);
+                break;
+            case Kind::circle:
+                hit = SweepCircle(in, primitive.a, primitive.scalar, result.touch);
+                break;
+            case Kind::polygon:
+            {
+                const b2AABB& box = m_primitiveBoxes[index];
+                if (query.upperBound.x < box.lowerBound.x || query.upperBound.y < box.lowerBound.y ||
+                    query.lowerBound.x > box.upperBound.x || query.lowerBound.y > box.upperBound.y)
+                {
+                    return;
+                }
+                hit = SweepPolygon(in, m_polygonVertices.data() + primitive.first,
+                                   m_polygonNormals.data() + primitive.first, primitive.count, result.touch);
+                break;
+            }
+            }
+            if (hit)
+            {
+                result.material = &m_materials[primitive.material];
+                result.surfaceVelocity = b2Vec2(0.0f, 0.0f);
+                found = true;
+            }
+        });
+    return found;
+}
+
+std::size_t WorldGeometry::Bytes() const
+{
+    return (m_materials.capacity() + m_movingMaterials.capacity()) * sizeof(SurfaceMaterial) +
+           m_primitives.capacity() * sizeof(Primitive) + m_primitiveBoxes.capacity() * sizeof(b2AABB) +
+           (m_polygonVertices.capacity() + m_polygonNormals.capacity()) * sizeof(b2Vec2) +
+           m_staticGrid.Bytes() + m_movingBodies.capacity() * sizeof(MovingBody) +
+           m_movingShapes.capacity() * sizeof(MovingShape) + m_movingBoxes.capacity() * sizeof(b2AABB) +
+           m_movingGrid.Bytes();
+}
+
+} // namespace cfx::particles

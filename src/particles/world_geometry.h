@@ -1,0 +1,154 @@
+// contactfx internal: the world's fixtures as pool particles see them.
+//
+// Static geometry is copied once into flat world-space primitives (segments, circles, convex polygons)
+// listed in a uniform grid, and copied again only when it changes. Box2D 2.4 tells nobody when a fixture
+// is created, so every step walks the world's body list once and folds what defines the static geometry
+// (each enabled static body's address and transform; each solid fixture's address, shape type, filter,
+// friction, restitution and threshold; each child's broad-phase box) into a 64-bit signature; a different
+// signature rebuilds the cache. This catches created, destroyed, moved, enabled, disabled and re-filtered
+// static fixtures, including a new fixture at a freed fixture's address (its box differs). Editing a
+// shape's vertices in place is not caught (Box2D's broad phase would not see it either): call
+// Invalidate() after doing that.
+//
+// Moving geometry (dynamic and kinematic bodies, awake or asleep) is gathered during the same walk into
+// a per-step list and its own grid, keyed by each child's broad-phase box, which Box2D sets to cover the
+// last step's motion. Moving shapes are tested in the body's own frame: the particle's start is taken
+// into the body's frame at the start of the step (reconstructed as position - velocity * dt, which is
+// how Box2D integrated it) and its end into the frame at the end, so a body sweeping into a resting
+// particle meets it like a particle flying into a resting body, and a touch puts the particle on the
+// body's surface where the body is now: carried along or pushed away, never left inside.
+//
+// Threading: Scan runs on one thread; SweepStatic and SweepMoving are const and run from several.
+// Allocation: none once the vectors have grown to the world's size.
+#pragma once
+
+#include "particles/grid.h"
+#include "particles/sweep.h"
+
+#include <box2d/b2_math.h>
+#include <cstdint>
+#include <vector>
+
+class b2World;
+class b2Body;
+class b2Shape;
+
+namespace cfx
+{
+struct BodyFilter;
+}
+
+namespace cfx::particles
+{
+
+/// What the particle meets: the fixture's collision filter and response.
+struct SurfaceMaterial
+{
+    float friction = 0.0f;
+    float restitution = 0.0f;
+    float restSpeed = 0.0f; ///< the fixture's restitution threshold (m/s)
+};
+
+/// A particle type's side of a touch.
+struct ParticleSide
+{
+    float radius;
+    float restitution;
+    float friction;
+    float restSpeed;
+    std::uint16_t categoryBits;
+    std::uint16_t maskBits;
+};
+
+/// Where a particle ends up after meeting geometry.
+struct SweepResult
+{
+    Touch touch; ///< in world space
+    b2Vec2 surfaceVelocity{0.0f, 0.0f};
+    const SurfaceMaterial* material = nullptr; ///< valid until the next Scan
+};
+
+class WorldGeometry
+{
+public:
+    /// Walks the world once: rebuilds the static cache if its signature changed, gathers moving
+    /// shapes. Bodies `ignore` ignores (body-backed particles) are skipped. `dt` (s) reconstructs where
+    /// moving bodies were at the start of the step.
+    void Scan(b2World& world, const BodyFilter* ignore, float dt);
+    /// Forces a static rebuild at the next Scan.
+    void Invalidate() { m_signature = 0; }
+
+    /// Earliest touch of the disc moving from in.p by in.d with static fixtures the particle's filter
+    /// accepts; updates `result` (world space) and returns whether it found one earlier than result's.
+    bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result) const;
+    /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
+    /// is at `end` (both world, end of step frame for `end`).
+    bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const;
+
+    bool HasStatic() const { return !m_staticGrid.Empty(); }
+    bool HasMoving() const { return !m_movingShapes.empty(); }
+    /// Times the static cache was built (for tests).
+    std::uint64_t StaticBuilds() const { return m_builds; }
+    std::size_t StaticPrimitives() const { return m_primitives.size(); }
+    std::size_t MovingShapes() const { return m_movingShapes.size(); }
+    /// Heap bytes held.
+    std::size_t Bytes() const;
+
+    enum class Kind : std::uint8_t
+    {
+        segment,
+        circle,
+        polygon,
+    };
+
+    /// One static shape in world space. Segment: v1 = a, v2 = b, normal, scalar = 1 / length^2.
+    /// Circle: centre a, scalar = radius. Polygon: `count` vertices and normals from `first` in the
+    /// polygon pools.
+    struct Primitive
+    {
+        b2Vec2 a, b, normal;
+        float scalar;
+        std::uint32_t first;
+        std::uint32_t material;
+        std::uint16_t categoryBits, maskBits;
+        Kind kind;
+        std::uint8_t count;
+        bool oneSided;
+    };
+    static_assert(sizeof(Primitive) <= 48, "a static primitive fits in 48 bytes");
+
+private:
+    struct MovingBody
+    {
+        b2Transform before, after;
+        b2Vec2 center; ///< world centre of mass at the end of the step
+        b2Vec2 velocity;
+        float angularVelocity;
+    };
+    struct MovingShape
+    {
+        const b2Shape* shape;
+        std::int32_t child;
+        std::uint32_t body;
+        std::uint32_t material;
+        std::uint16_t categoryBits, maskBits;
+    };
+
+    void BuildStatic(b2World& world);
+
+    std::uint64_t m_signature = 0;
+    std::uint64_t m_builds = 0;
+    std::vector<SurfaceMaterial> m_materials;       ///< of static fixtures
+    std::vector<SurfaceMaterial> m_movingMaterials; ///< of this step's moving fixtures
+    std::vector<Primitive> m_primitives;
+    std::vector<b2AABB> m_primitiveBoxes;
+    std::vector<b2Vec2> m_polygonVertices, m_polygonNormals;
+    Grid m_staticGrid;
+
+    std::vector<MovingBody> m_movingBodies;
+    std::vector<MovingShape> m_movingShapes;
+    std::vector<b2AABB> m_movingBoxes;
+    Grid m_movingGrid;
+};
+
+} // namespace cfx::particles

@@ -1,0 +1,98 @@
+// Scene fixtures -> materials: the `material` property first, then the config's assignment rules.
+//
+// Every bad property of the scene is collected before anything is thrown, so a user fixes the file in one
+// pass, and no fixture is touched unless the whole scene resolves.
+#include "contactfx/sim/scene_materials.h"
+
+#include "contactfx/effects.h"
+
+#include <box2d/b2_body.h>
+#include <box2d/b2_fixture.h>
+#include <string>
+
+namespace cfx
+{
+
+namespace
+{
+
+std::string KnownMaterials(const EffectsConfig& config)
+{
+    std::string known;
+    for (const std::string& each : config.materials)
+    {
+        known += (known.empty() ? "" : ", ") + each;
+    }
+    return known.empty() ? "no materials" : known;
+}
+
+} // namespace
+
+std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsConfig& config,
+                                              std::string_view file)
+{
+    std::vector<Diagnostic> problems;
+    std::vector<MaterialId> materials(scene.fixtures.size());
+    std::vector<int> fixturesSeen(scene.bodies.size(), 0);
+    for (std::size_t f = 0; f < scene.fixtures.size(); ++f)
+    {
+        const SceneFixture& fixture = scene.fixtures[f];
+        const std::size_t body = static_cast<std::size_t>(fixture.bodyIndex);
+        const int indexInBody = fixturesSeen[body]++;
+        bool hasProperty = false;
+        for (std::size_t k = 0; k < fixture.properties.items.size(); ++k)
+        {
+            const CustomProperty& property = fixture.properties.items[k];
+            if (property.name != "material")
+            {
+                continue;
+            }
+            hasProperty = true;
+            const std::string path = "body[" + std::to_string(body) + "].fixture[" +
+                                     std::to_string(indexInBody) + "].customProperties[" + std::to_string(k) +
+                                     "]";
+            const std::string* name = std::get_if<std::string>(&property.value);
+            if (name == nullptr)
+            {
+                problems.push_back({std::string(file), path, "expected the material as a string property"});
+                continue;
+            }
+            const MaterialId material = config.FindMaterial(*name);
+            if (!material.IsValid())
+            {
+                problems.push_back({std::string(file), path + ".string",
+                                    "unknown material \"" + *name +
+                                        "\" (the effects config has: " + KnownMaterials(config) + ")"});
+                continue;
+            }
+            materials[f] = material;
+        }
+        if (!hasProperty && fixture.fixture != nullptr)
+        {
+            const FixtureFacts facts = FactsOf(*fixture.fixture, scene.bodies[body].name, fixture.name);
+            if (std::optional<std::size_t> rule = FirstMatch(config.assignments, facts))
+            {
+                materials[f] = config.FindMaterial(config.assignments[*rule].material);
+            }
+        }
+    }
+    if (!problems.empty())
+    {
+        throw InputError(std::move(problems));
+    }
+    return materials;
+}
+
+void AssignSceneMaterials(const Scene& scene, Effects& effects, std::string_view file)
+{
+    const std::vector<MaterialId> materials = ResolveSceneMaterials(scene, effects.Config(), file);
+    for (std::size_t f = 0; f < scene.fixtures.size(); ++f)
+    {
+        if (materials[f].IsValid())
+        {
+            effects.SetMaterial(scene.fixtures[f].fixture, materials[f]);
+        }
+    }
+}
+
+} // namespace cfx

@@ -1,0 +1,202 @@
+// contactfx render and --plot, through the binary: what files they write, and that bad flags write none.
+#include "cli/cli_support.h"
+#include "png_header.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+std::string Bytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+std::vector<std::string> FilesIn(const std::filesystem::path& dir)
+{
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+    {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// Tiny, short renders keep these tests fast.
+const std::string kTiny = " --width 48 --height 32 ";
+
+// A refused render: exit 1, the flag named on one line, nothing written into `dir`.
+void ExpectRefused(const std::string& args, const std::filesystem::path& dir, const std::string& flag)
+{
+    const CliResult result = RunCli("render " + args);
+    EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.output;
+    EXPECT_NE(result.output.find("contactfx: error:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(flag), std::string::npos)
+        << "'" << flag << "' missing in: " << result.output;
+    EXPECT_EQ(result.output.find("terminate"), std::string::npos) << result.output;
+    EXPECT_TRUE(FilesIn(dir).empty()) << "files written by a refused render: " << args;
+}
+
+} // namespace
+
+TEST(CliRender, OneFrameAtATimeIsAPngOfTheAskedSize)
+{
+    const std::filesystem::path dir = ScratchDir("render_png");
+    const std::filesystem::path out = dir / "frame.png";
+    const CliResult result = RunCli("render --demo --time 0.5" + kTiny + "--out " + out.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const auto size = PngSize(Bytes(out));
+    ASSERT_TRUE(size.has_value());
+    EXPECT_EQ(size->first, 48u);
+    EXPECT_EQ(size->second, 32u);
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"frame.png"}); // no temporary file left
+}
+
+TEST(CliRender, SameFlagsGiveTheSameBytesAndTheOneFrameIsTheSequencesFrame)
+{
+    const std::filesystem::path dir = ScratchDir("render_same");
+    const std::string scene = Scene("physics_driven_particles.json");
+    ASSERT_EQ(
+        RunCli("render " + scene + " --time 0.4" + kTiny + "--out " + (dir / "a.png").string()).exitCode, 0);
+    ASSERT_EQ(
+        RunCli("render " + scene + " --time 0.4" + kTiny + "--out " + (dir / "b.png").string()).exitCode, 0);
+    EXPECT_EQ(Bytes(dir / "a.png"), Bytes(dir / "b.png"));
+    // Frame 2 of a 5 fps sequence shows t = 0.4 s.
+    ASSERT_EQ(
+        RunCli("render " + scene + " --seconds 0.6 --fps 5" + kTiny + "--out " + (dir / "s_%d.png").string())
+            .exitCode,
+        0);
+    EXPECT_EQ(Bytes(dir / "a.png"), Bytes(dir / "s_2.png"));
+    EXPECT_NE(Bytes(dir / "s_0.png"), Bytes(dir / "s_2.png"));
+}
+
+TEST(CliRender, ASequenceWritesSecondsTimesFpsNumberedFiles)
+{
+    const std::filesystem::path dir = ScratchDir("render_sequence");
+    const CliResult result =
+        RunCli("render --demo --seconds 0.5 --fps 8" + kTiny + "--out " + (dir / "frame_%04d.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const std::vector<std::string> expected = {"frame_0000.png", "frame_0001.png", "frame_0002.png",
+                                               "frame_0003.png"}; // round(0.5 * 8) = 4 frames
+    EXPECT_EQ(FilesIn(dir), expected);
+    for (const std::string& name : expected)
+    {
+        EXPECT_TRUE(PngSize(Bytes(dir / name)).has_value()) << name;
+    }
+    EXPECT_NE(result.output.find("4/4 frames"), std::string::npos) << "no progress shown: " << result.output;
+}
+
+TEST(CliRender, VideosGoThroughFfmpeg)
+{
+    const std::filesystem::path dir = ScratchDir("render_video");
+    const std::string flags = " --demo --seconds 0.3 --fps 10" + kTiny;
+    CliResult result = RunCli("render" + flags + "--out " + (dir / "clip.mp4").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    result = RunCli("render" + flags + "--out " + (dir / "clip.gif").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(FilesIn(dir), (std::vector<std::string>{"clip.gif", "clip.mp4"})); // no temporary files
+    const std::string mp4 = Bytes(dir / "clip.mp4");
+    ASSERT_GT(mp4.size(), 12u);
+    EXPECT_EQ(mp4.substr(4, 4), "ftyp");
+    EXPECT_EQ(Bytes(dir / "clip.gif").substr(0, 6), "GIF89a");
+}
+
+TEST(CliRender, WithoutFfmpegAVideoIsAClearErrorAndNoFile)
+{
+    const std::filesystem::path dir = ScratchDir("render_no_ffmpeg");
+    const std::filesystem::path emptyPath = ScratchDir("render_empty_path");
+    // The shell that runs contactfx is /bin/sh by its full path, so it starts with an empty $PATH.
+    const char* saved = std::getenv("PATH");
+    const std::string path = saved != nullptr ? saved : "";
+    ::setenv("PATH", emptyPath.c_str(), 1);
+    const CliResult result =
+        RunCli("render --demo --seconds 0.2" + kTiny + "--out " + (dir / "clip.mp4").string());
+    ::setenv("PATH", path.c_str(), 1);
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("contactfx: error: ffmpeg not found: install ffmpeg to write .mp4/.gif"),
+              std::string::npos)
+        << result.output;
+    EXPECT_TRUE(FilesIn(dir).empty());
+}
+
+TEST(CliRender, AFailingFfmpegLeavesNoFile)
+{
+    // A stand-in ffmpeg that takes every frame, writes half a file where it was told, and fails.
+    const std::filesystem::path bin = ScratchDir("render_fake_ffmpeg_bin");
+    const std::filesystem::path fake = bin / "ffmpeg";
+    std::ofstream(fake)
+        << "#!/bin/sh\ncat > /dev/null\nfor a; do last=$a; done\necho partial > \"$last\"\nexit 3\n";
+    std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+    const std::filesystem::path dir = ScratchDir("render_fake_ffmpeg");
+    const char* saved = std::getenv("PATH");
+    const std::string path = saved != nullptr ? saved : "";
+    ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
+    const CliResult result =
+        RunCli("render --demo --seconds 0.2" + kTiny + "--out " + (dir / "clip.mp4").string());
+    ::setenv("PATH", path.c_str(), 1);
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("ffmpeg failed (exit status 3)"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("clip.mp4"), std::string::npos) << result.output;
+    EXPECT_TRUE(FilesIn(dir).empty()) << "left behind: " << (FilesIn(dir).empty() ? "" : FilesIn(dir)[0]);
+}
+
+TEST(CliRender, BadFlagsAreRefusedNamingTheFlagAndWriteNothing)
+{
+    const std::filesystem::path dir = ScratchDir("render_bad");
+    const std::string png = " --out " + (dir / "f.png").string();
+    const std::string mp4 = " --out " + (dir / "f.mp4").string();
+    ExpectRefused("--demo --width -5" + png, dir, "--width");
+    ExpectRefused("--demo --height 0" + png, dir, "--height");
+    ExpectRefused("--demo --time nan" + png, dir, "--time");
+    ExpectRefused("--demo --time -1" + png, dir, "--time");
+    ExpectRefused("--demo --fps 0 --seconds 1" + mp4, dir, "--fps");
+    ExpectRefused("--demo --seconds inf" + mp4, dir, "--seconds");
+    ExpectRefused("--demo --view 0" + png, dir, "--view");
+    ExpectRefused("--demo --out " + (dir / "f.avi").string(), dir, "--out");
+    ExpectRefused("--demo --out " + (dir / "f_%d_%d.png").string(), dir, "--out");
+    ExpectRefused("--demo --out " + (dir / "missing" / "f.png").string(), dir, "--out");
+    ExpectRefused("--demo --time 1" + mp4, dir, "--time");
+    ExpectRefused("--demo --width 47 --height 32" + mp4, dir, "--width");
+    ExpectRefused("--time 1" + png, dir, "scene");
+    ExpectRefused(Scene("physics_driven_particles.json") + " --demo" + png, dir, "scene");
+    ExpectRefused((dir / "missing.json").string() + png, dir, "missing.json");
+}
+
+TEST(CliPlot, RunAndDemoWriteATuningPlot)
+{
+    const std::filesystem::path dir = ScratchDir("plot");
+    CliResult result = RunCli("demo --seconds 1 --plot " + (dir / "demo.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    result = RunCli("run " + Scene("physics_driven_particles.json") + " --seconds 1 --plot " +
+                    (dir / "run.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    for (const char* name : {"demo.png", "run.png"})
+    {
+        const auto size = PngSize(Bytes(dir / name));
+        ASSERT_TRUE(size.has_value()) << name;
+        EXPECT_GT(size->first, 0u);
+    }
+    EXPECT_EQ(FilesIn(dir), (std::vector<std::string>{"demo.png", "run.png"}));
+}
+
+TEST(CliPlot, APlotThatIsNotAPngIsRefused)
+{
+    const std::filesystem::path dir = ScratchDir("plot_bad");
+    const CliResult result = RunCli("demo --seconds 1 --plot " + (dir / "plot.svg").string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("--plot"), std::string::npos) << result.output;
+    EXPECT_TRUE(FilesIn(dir).empty());
+}
+
+} // namespace cfx::test

@@ -1,0 +1,316 @@
+// contactfx validate: every problem of every file, with file, JSON path, expected and found (line and
+// column for malformed JSON), exit code 1 on any error, one JSON object per file with --json, and no
+// file ever modified.
+#include "cli/cli_support.h"
+
+#include <gtest/gtest.h>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+// `--json` output: one object per line, keyed by file name.
+std::map<std::string, nlohmann::json> JsonLines(const std::string& output)
+{
+    std::map<std::string, nlohmann::json> byFile;
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);)
+    {
+        nlohmann::json object = nlohmann::json::parse(line);
+        byFile[object["file"].get<std::string>()] = object;
+    }
+    return byFile;
+}
+
+bool HasError(const nlohmann::json& report, const std::string& path, const std::string& messagePart)
+{
+    for (const nlohmann::json& error : report["errors"])
+    {
+        if (error["path"] == path &&
+            error["message"].get<std::string>().find(messagePart) != std::string::npos)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string Fixture(const std::string& fixture, const std::string& bodyMore = "")
+{
+    return R"({"gravity": {"x": 0, "y": -10}, "body": [{"type": 2, "fixture": [)" + fixture + "]" + bodyMore +
+           "}]}";
+}
+
+std::string Polygon(const std::string& xs, const std::string& ys)
+{
+    return Fixture(R"({"density": 1, "polygon": {"vertices": {"x": [)" + xs + R"(], "y": [)" + ys + "]}}}");
+}
+
+const std::string kCircle = R"({"density": 1, "circle": {"radius": 0.5}})";
+
+std::string TwoBodiesAndJoint(const std::string& joint)
+{
+    return R"({"body": [{"type": 2, "fixture": [)" + kCircle + R"(]}, {"type": 2, "fixture": [)" + kCircle +
+           R"(]}], "joint": [)" + joint + "]}";
+}
+
+std::string Effects(const std::string& rules, const std::string& more = "")
+{
+    return R"({"materials": ["steel", "stone"], "particleTypes": [{"name": "sparks"}], "rules": [)" + rules +
+           "]" + more + "}";
+}
+
+struct BadFile
+{
+    const char* name;
+    std::string text;
+    const char* path;    ///< expected JSON path ("" for malformed JSON: then line and column are expected)
+    const char* message; ///< part of the expected message
+};
+
+// The issue's list of bad input, one file each.
+std::vector<BadFile> BadFiles()
+{
+    const std::string tutorial = FileText(Scene("physics_driven_particles.json"));
+    std::string glass = tutorial;
+    glass.replace(glass.find("\"string\": \"steel\""), 17, "\"string\": \"glass\"");
+    const std::string preset = FileText(Scene("default.effects.json"));
+    return {
+        {"truncated.json", tutorial.substr(0, tutorial.size() / 2), "", "malformed JSON"},
+        {"truncated.effects.json", preset.substr(0, preset.size() / 3), "", "malformed JSON"},
+        {"wrong_type.json", Fixture(R"({"friction": "abc", "circle": {"radius": 1}})"),
+         "body[0].fixture[0].friction", "expected a number, found string \"abc\""},
+        {"nan.json", Fixture(kCircle, R"(, "angle": "7FC00000")"), "body[0].angle", "finite"},
+        {"infinity.json", Fixture(kCircle, R"(, "linearVelocity": {"x": "7F800000", "y": 0})"),
+         "body[0].linearVelocity.x", "finite"},
+        {"too_big.json", Fixture(kCircle, R"(, "position": {"x": 1e39, "y": 0})"), "body[0].position.x",
+         "float range"},
+        {"out_of_range.json", Fixture(kCircle, R"(, "position": {"x": 1e30, "y": 0})"), "body[0].position.x",
+         "between"},
+        {"negative_density.json", Fixture(R"({"density": -1, "circle": {"radius": 1}})"),
+         "body[0].fixture[0].density", ">= 0"},
+        {"negative_radius.json", Fixture(R"({"density": 1, "circle": {"radius": -1}})"),
+         "body[0].fixture[0].circle.radius", "> 0"},
+        {"one_vertex.json", Polygon("0", "0"), "body[0].fixture[0].polygon.vertices", "found 1"},
+        {"nine_vertices.json",
+         Polygon("1, 0.77, 0, -0.77, -1, -0.77, 0, 0.77, 0.9", "0, 0.77, 1, 0.77, 0, -0.77, -1, -0.77, -0.3"),
+         "body[0].fixture[0].polygon.vertices", "found 9"},
+        {"degenerate.json", Polygon("0, 1, 2", "0, 0, 0"), "body[0].fixture[0].polygon.vertices",
+         "collinear"},
+        {"non_convex.json", Polygon("0, 2, 0, 0.5", "0, 1, 2, 1"), "body[0].fixture[0].polygon.vertices",
+         "not convex"},
+        {"joint_body.json", TwoBodiesAndJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 7})"),
+         "joint[0].bodyB", "between 0 and 1"},
+        {"glass.json", glass, "body[3].fixture[0].customProperties[0].string", "unknown material \"glass\""},
+        {"unknown_material.effects.json",
+         Effects(R"({"materialA": "steel", "materialB": "wood", "particleType": "sparks"})"),
+         "rules[0].materialB", "unknown material \"wood\""},
+        {"unknown_type.effects.json",
+         Effects(R"({"materialA": "steel", "materialB": "stone", "particleType": "smoke"})"),
+         "rules[0].particleType", "unknown particle type \"smoke\""},
+        {"same_pair.effects.json",
+         Effects(R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks"},
+                    {"materialA": "stone", "materialB": "steel", "particleType": "sparks"})"),
+         "rules[1]", "a second rule for the pair steel+stone"},
+        {"nan.effects.json",
+         Effects(
+             R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks", "threshold": "7FC00000"})"),
+         "rules[0].threshold", "finite"},
+        {"negative.effects.json", Effects("", R"(, "budget": {"capacity": 0})"), "budget.capacity",
+         "expected a number in [1, 4000000], found 0"},
+        {"assignment.effects.json", Effects("", R"(, "assignments": [{"material": "glass"}])"),
+         "assignments[0].material", "unknown material \"glass\""},
+    };
+}
+
+} // namespace
+
+TEST(CliValidate, ShippedAndSampleFilesAreValid)
+{
+    std::vector<std::string> files;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(CONTACTFX_SOURCE_DIR) + "/scenes"))
+    {
+        files.push_back(entry.path().string());
+    }
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(CONTACTFX_SHARED_DIR) + "/rube-samples"))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            files.push_back(entry.path().string());
+        }
+    }
+    std::string args = "validate";
+    for (const std::string& file : files)
+    {
+        args += " " + file;
+    }
+    const CliResult text = RunCli(args);
+    EXPECT_EQ(text.exitCode, 0) << text.output;
+    for (const std::string& file : files)
+    {
+        EXPECT_NE(text.output.find(file + ": ok: "), std::string::npos) << file << "\n" << text.output;
+    }
+
+    const CliResult json = RunCli("validate --json " + args.substr(9));
+    ASSERT_EQ(json.exitCode, 0) << json.output;
+    const std::map<std::string, nlohmann::json> reports = JsonLines(json.output);
+    EXPECT_EQ(reports.size(), files.size());
+    for (const std::string& file : files)
+    {
+        ASSERT_TRUE(reports.contains(file)) << file;
+        const nlohmann::json& report = reports.at(file);
+        EXPECT_EQ(report["ok"], true);
+        EXPECT_TRUE(report["errors"].empty());
+        const bool effects = file.ends_with(".effects.json");
+        EXPECT_EQ(report["kind"], effects ? "effects" : "scene") << file;
+        if (effects)
+        {
+            continue;
+        }
+        // Counts as the file itself has them.
+        const nlohmann::json scene = nlohmann::json::parse(FileText(file));
+        std::size_t fixtures = 0;
+        for (const nlohmann::json& body : scene.value("body", nlohmann::json::array()))
+        {
+            fixtures += body.value("fixture", nlohmann::json::array()).size();
+        }
+        EXPECT_EQ(report["bodies"], scene.value("body", nlohmann::json::array()).size()) << file;
+        EXPECT_EQ(report["fixtures"], fixtures) << file;
+        EXPECT_EQ(report["joints"], scene.value("joint", nlohmann::json::array()).size()) << file;
+        EXPECT_EQ(report["images"], scene.value("image", nlohmann::json::array()).size()) << file;
+    }
+}
+
+TEST(CliValidate, EveryProblemOfEveryFileIsReportedAndNoFileIsTouched)
+{
+    const std::filesystem::path dir = ScratchDir("validate_bad");
+    const std::vector<BadFile> bad = BadFiles();
+    std::string args;
+    std::map<std::string, std::filesystem::file_time_type> times;
+    for (const BadFile& file : bad)
+    {
+        WriteTestFile(dir / file.name, file.text);
+        times[file.name] = std::filesystem::last_write_time(dir / file.name);
+        args += " " + (dir / file.name).string();
+    }
+    const std::string good = Scene("physics_driven_particles.json");
+
+    const CliResult json = RunCli("validate --json" + args + " " + good);
+    EXPECT_EQ(json.exitCode, 1) << json.output;
+    const std::map<std::string, nlohmann::json> reports = JsonLines(json.output);
+    EXPECT_EQ(reports.at(good)["ok"], true);
+    for (const BadFile& file : bad)
+    {
+        SCOPED_TRACE(file.name);
+        const nlohmann::json& report = reports.at((dir / file.name).string());
+        EXPECT_EQ(report["ok"], false);
+        if (std::string(file.path).empty())
+        {
+            ASSERT_EQ(report["errors"].size(), 1u) << report;
+            EXPECT_GT(report["errors"][0]["line"], 0);
+            EXPECT_GT(report["errors"][0]["column"], 0);
+            EXPECT_NE(report["errors"][0]["message"].get<std::string>().find(file.message),
+                      std::string::npos);
+        }
+        else
+        {
+            EXPECT_TRUE(HasError(report, file.path, file.message)) << report.dump(2);
+        }
+        EXPECT_EQ(FileText(dir / file.name), file.text) << "modified";
+        EXPECT_EQ(std::filesystem::last_write_time(dir / file.name), times[file.name]) << "touched";
+    }
+    EXPECT_EQ(static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir),
+                                                     std::filesystem::directory_iterator())),
+              bad.size())
+        << "validate wrote a file";
+
+    // Text mode: the same problems as `file: path: message` or `file:line:column: message`.
+    const CliResult text = RunCli("validate" + args);
+    EXPECT_EQ(text.exitCode, 1);
+    for (const BadFile& file : bad)
+    {
+        const std::string where = (dir / file.name).string() + (std::string(file.path).empty() ? ":" : ": ");
+        EXPECT_NE(text.output.find(where + file.path), std::string::npos) << where << "\n" << text.output;
+        EXPECT_NE(text.output.find(file.message), std::string::npos) << file.message;
+    }
+    EXPECT_EQ(text.output.find("terminate"), std::string::npos);
+}
+
+TEST(CliValidate, SeveralProblemsInOneFileAreAllListed)
+{
+    const std::filesystem::path dir = ScratchDir("validate_several");
+    WriteTestFile(
+        dir / "several.json",
+        R"({"body": [{"type": 5, "angle": "7FC00000", "fixture": [{"friction": "abc", "circle": {"radius": -1}},
+                  {"density": -1, "polygon": {"vertices": {"x": [0], "y": [0]}}}]}],
+                  "joint": [{"type": "weld", "bodyA": 0, "bodyB": 9}]})");
+    const CliResult result = RunCli("validate --json " + (dir / "several.json").string());
+    EXPECT_EQ(result.exitCode, 1);
+    const nlohmann::json report = JsonLines(result.output).begin()->second;
+    for (const char* path :
+         {"body[0].type", "body[0].angle", "body[0].fixture[0].friction", "body[0].fixture[0].circle.radius",
+          "body[0].fixture[1].density", "body[0].fixture[1].polygon.vertices", "joint[0].bodyB"})
+    {
+        EXPECT_TRUE(HasError(report, path, "")) << path << "\n" << report.dump(2);
+    }
+}
+
+TEST(CliValidate, ScenesAreCheckedAgainstTheSelectedEffectsConfig)
+{
+    const std::filesystem::path dir = ScratchDir("validate_effects");
+    std::string scene = FileText(Scene("physics_driven_particles.json"));
+    scene.replace(scene.find("\"string\": \"steel\""), 17, "\"string\": \"glass\"");
+    WriteTestFile(dir / "glass.json", scene);
+    const std::string glass = (dir / "glass.json").string();
+    EXPECT_EQ(RunCli("validate " + glass).exitCode, 1) << "the default preset has no glass";
+    EXPECT_EQ(RunCli("validate --preset tutorial " + glass).exitCode, 1);
+
+    nlohmann::json config = nlohmann::json::parse(FileText(Scene("default.effects.json")));
+    config["materials"].push_back("glass");
+    WriteTestFile(dir / "glass.effects.json", config.dump(2));
+    const CliResult ok = RunCli("validate --effects " + (dir / "glass.effects.json").string() + " " + glass);
+    EXPECT_EQ(ok.exitCode, 0) << ok.output;
+
+    // A broken --effects file is itself reported, and still every scene is checked.
+    WriteTestFile(dir / "broken.effects.json", R"({"materials": ["a"], "budget": {"capacity": "lots"}})");
+    const CliResult broken =
+        RunCli("validate --json --effects " + (dir / "broken.effects.json").string() + " " + glass);
+    EXPECT_EQ(broken.exitCode, 1);
+    const std::map<std::string, nlohmann::json> reports = JsonLines(broken.output);
+    EXPECT_TRUE(HasError(reports.at((dir / "broken.effects.json").string()), "budget.capacity", "expected"));
+    EXPECT_EQ(reports.at(glass)["ok"], true) << "structure checked without a config";
+}
+
+TEST(CliValidate, KindComesFromAsNameOrContent)
+{
+    const std::filesystem::path dir = ScratchDir("validate_kind");
+    WriteTestFile(dir / "fx.json", FileText(Scene("tutorial.effects.json")));
+    const CliResult byContent = RunCli("validate --json " + (dir / "fx.json").string());
+    EXPECT_EQ(byContent.exitCode, 0) << byContent.output;
+    EXPECT_EQ(JsonLines(byContent.output).begin()->second["kind"], "effects");
+
+    const CliResult forced = RunCli("validate --json --as scene " + (dir / "fx.json").string());
+    EXPECT_EQ(JsonLines(forced.output).begin()->second["kind"], "scene");
+    const CliResult asEffects = RunCli("validate --as effects " + Scene("physics_driven_particles.json"));
+    EXPECT_EQ(asEffects.exitCode, 1);
+    EXPECT_NE(asEffects.output.find("body: unknown field"), std::string::npos) << asEffects.output;
+}
+
+TEST(CliValidate, MissingFilesAndBadFlagsFail)
+{
+    const std::filesystem::path dir = ScratchDir("validate_missing");
+    const CliResult missing = RunCli("validate " + (dir / "nope.json").string());
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.output.find((dir / "nope.json").string()), std::string::npos);
+    EXPECT_EQ(RunCli("validate").exitCode, 1);
+    EXPECT_EQ(RunCli("validate --as picture " + Scene("physics_driven_particles.json")).exitCode, 1);
+}
+
+} // namespace cfx::test

@@ -1,0 +1,351 @@
+#include "test_world.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <map>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+// Collects events through the listener, to check it sees what Events() says.
+class EventLog final : public EffectEventListener
+{
+public:
+    void OnEffectEvent(const EffectEvent& event) override { events.push_back(event); }
+    std::vector<EffectEvent> events;
+};
+
+// A steel box on concrete; the test moves it and collects every event.
+struct ScrapeScene : TestWorld
+{
+    explicit ScrapeScene(EffectsConfig config = DefaultPreset())
+    {
+        ground = CreateGround();
+        box = CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        EffectsDef def;
+        def.config = std::move(config);
+        def.eventListener = &log;
+        effects = std::make_unique<Effects>(*world, def);
+        effects->SetMaterial(ground, Material("concrete"));
+        effects->SetMaterial(box, Material("steel"));
+    }
+
+    // Steps with the box held at `speed` along x; returns the events of all those steps.
+    std::vector<EffectEvent> Slide(float speed, int steps)
+    {
+        std::vector<EffectEvent> out;
+        for (int i = 0; i < steps; ++i)
+        {
+            world->Step(1.0f / 60.0f, 8, 3);
+            box->SetLinearVelocity(b2Vec2(speed, box->GetLinearVelocity().y));
+            box->SetAngularVelocity(0.0f);
+            effects->Step(1.0f / 60.0f);
+            out.insert(out.end(), effects->Events().begin(), effects->Events().end());
+        }
+        return out;
+    }
+
+    std::vector<EffectEvent> StepPlain(int steps)
+    {
+        std::vector<EffectEvent> out;
+        for (int i = 0; i < steps; ++i)
+        {
+            Step();
+            out.insert(out.end(), effects->Events().begin(), effects->Events().end());
+        }
+        return out;
+    }
+
+    EventLog log;
+    b2Body* ground = nullptr;
+    b2Body* box = nullptr;
+};
+
+std::vector<EffectEvent> OfType(const std::vector<EffectEvent>& events, EffectEventType type)
+{
+    std::vector<EffectEvent> out;
+    for (const EffectEvent& event : events)
+    {
+        if (event.type == type)
+        {
+            out.push_back(event);
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST(Events, ScrapeBeginsChangesAndEndsBelowThreshold)
+{
+    ScrapeScene scene;
+    std::vector<EffectEvent> events = scene.StepPlain(30); // settle: no scrape while resting
+    EXPECT_TRUE(OfType(events, EffectEventType::scrapeBegan).empty());
+
+    events = scene.Slide(4.0f, 30);
+    std::vector<EffectEvent> began = OfType(events, EffectEventType::scrapeBegan);
+    ASSERT_EQ(began.size(), 1u);
+    const EffectEvent first = began[0]; // a copy: `began` is reassigned below
+    EXPECT_EQ(first.rule, RuleId{0});
+    EXPECT_EQ(first.materialA, scene.Material("steel"));
+    EXPECT_EQ(first.materialB, scene.Material("concrete"));
+    EXPECT_EQ(first.fixtureA, scene.box->GetFixtureList());
+    EXPECT_EQ(first.fixtureB, scene.ground->GetFixtureList());
+    EXPECT_GT(first.intensity, 1.0f);
+    EXPECT_NEAR(first.tangentialSpeed, 4.0f, 0.01f);
+    EXPECT_GT(first.normalImpulse, 0.0f);
+    EXPECT_NEAR(first.point.y, 0.0f, 0.02f);
+    EXPECT_NEAR(first.normal.y, -1.0f, 1e-4f) << "from the steel box toward the concrete";
+    std::vector<EffectEvent> changed = OfType(events, EffectEventType::scrapeChanged);
+    EXPECT_EQ(changed.size(), 29u);
+    for (const EffectEvent& event : changed)
+    {
+        EXPECT_EQ(event.id, first.id);
+    }
+
+    // Stopped: the scrape lingers for scrapeEndDelay (0.1 s = 6 steps), then ends.
+    events = scene.Slide(0.0f, 12);
+    std::vector<EffectEvent> ended = OfType(events, EffectEventType::scrapeEnded);
+    ASSERT_EQ(ended.size(), 1u);
+    EXPECT_EQ(ended[0].id, first.id);
+    EXPECT_EQ(ended[0].end, ScrapeEnd::belowThreshold);
+    EXPECT_EQ(OfType(events, EffectEventType::scrapeChanged).size(), 5u);
+
+    // A new scrape gets a new id.
+    events = scene.Slide(4.0f, 5);
+    began = OfType(events, EffectEventType::scrapeBegan);
+    ASSERT_EQ(began.size(), 1u);
+    EXPECT_NE(began[0].id, first.id);
+}
+
+TEST(Events, EndDelayIsPerRule)
+{
+    EffectsConfig config = DefaultPreset();
+    config.rules[0].scrapeEndDelay = 0.5f;
+    ScrapeScene scene(config);
+    scene.StepPlain(30);
+    scene.Slide(4.0f, 10);
+    std::vector<EffectEvent> events = scene.Slide(0.0f, 20);
+    EXPECT_TRUE(OfType(events, EffectEventType::scrapeEnded).empty());
+    events = scene.Slide(0.0f, 12);
+    EXPECT_EQ(OfType(events, EffectEventType::scrapeEnded).size(), 1u);
+}
+
+TEST(Events, ScrapeEndsWhenTheContactEnds)
+{
+    ScrapeScene scene;
+    scene.StepPlain(30);
+    scene.Slide(4.0f, 10);
+    scene.box->SetTransform(b2Vec2(0.0f, 3.0f), 0.0f);
+    std::vector<EffectEvent> events = scene.Slide(4.0f, 2);
+    std::vector<EffectEvent> ended = OfType(events, EffectEventType::scrapeEnded);
+    ASSERT_EQ(ended.size(), 1u);
+    EXPECT_EQ(ended[0].end, ScrapeEnd::contactEnded);
+    EXPECT_EQ(events.front().type, EffectEventType::scrapeEnded) << "ends from callbacks come first";
+}
+
+TEST(Events, ScrapeEndsWhenABodyFallsAsleep)
+{
+    ScrapeScene scene;
+    scene.StepPlain(30);
+    scene.Slide(4.0f, 10);
+    scene.box->SetAwake(false);
+    scene.effects->Step(1.0f / 60.0f);
+    std::vector<EffectEvent> events(scene.effects->Events().begin(), scene.effects->Events().end());
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].type, EffectEventType::scrapeEnded);
+    EXPECT_EQ(events[0].end, ScrapeEnd::asleep);
+}
+
+TEST(Events, ScrapeEndsWhenTheBodyIsDestroyed)
+{
+    ScrapeScene scene;
+    scene.StepPlain(30);
+    scene.Slide(4.0f, 10);
+    const b2Fixture* boxFixture = scene.box->GetFixtureList();
+    scene.world->DestroyBody(scene.box);
+    scene.effects->Step(1.0f / 60.0f);
+    ASSERT_EQ(scene.effects->Events().size(), 1u);
+    const EffectEvent& ended = scene.effects->Events()[0];
+    EXPECT_EQ(ended.type, EffectEventType::scrapeEnded);
+    EXPECT_EQ(ended.end, ScrapeEnd::destroyed);
+    EXPECT_EQ(ended.fixtureA, boxFixture);
+}
+
+TEST(Events, ScrapeEndsWhenTheFixtureIsDestroyed)
+{
+    ScrapeScene scene;
+    scene.StepPlain(30);
+    scene.Slide(4.0f, 10);
+    b2Fixture* fixture = scene.box->GetFixtureList();
+    scene.effects->ForgetFixture(fixture);
+    scene.box->DestroyFixture(fixture);
+    scene.effects->Step(1.0f / 60.0f);
+    ASSERT_EQ(scene.effects->Events().size(), 1u);
+    EXPECT_EQ(scene.effects->Events()[0].end, ScrapeEnd::destroyed);
+}
+
+TEST(Events, EveryScrapeEndsWhateverHappens)
+{
+    // Random pushes, lifts, sleeps and a destruction: every began gets exactly one ended.
+    ScrapeScene scene;
+    b2Body* second = scene.CreateBox(b2Vec2(3.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    scene.effects->SetMaterial(second, scene.Material("steel"));
+    std::map<std::uint32_t, int> open;
+    std::uint32_t state = 12345;
+    auto next = [&state] { return (state = state * 1664525u + 1013904223u) >> 16; };
+    for (int i = 0; i < 600; ++i)
+    {
+        const std::uint32_t roll = next() % 100;
+        b2Body* body = (next() & 1) != 0 ? scene.box : second;
+        if (body != nullptr && roll < 20)
+        {
+            body->SetLinearVelocity(b2Vec2(static_cast<float>(next() % 13) - 6.0f, 0.0f));
+        }
+        else if (body != nullptr && roll < 22)
+        {
+            body->SetAwake(false);
+        }
+        else if (body != nullptr && roll < 24)
+        {
+            body->SetTransform(body->GetPosition() + b2Vec2(0.0f, 1.0f), 0.0f);
+        }
+        if (i == 450)
+        {
+            scene.world->DestroyBody(second);
+            second = nullptr;
+        }
+        scene.Step();
+        for (const EffectEvent& event : scene.effects->Events())
+        {
+            if (event.type == EffectEventType::scrapeBegan)
+            {
+                EXPECT_EQ(open[event.id]++, 0);
+            }
+            else if (event.type == EffectEventType::scrapeChanged)
+            {
+                EXPECT_EQ(open[event.id], 1) << "change of a scrape that is not going on";
+            }
+            else if (event.type == EffectEventType::scrapeEnded)
+            {
+                EXPECT_EQ(open[event.id]--, 1);
+            }
+        }
+    }
+    scene.world->DestroyBody(scene.box);
+    scene.Step();
+    for (const EffectEvent& event : scene.effects->Events())
+    {
+        if (event.type == EffectEventType::scrapeEnded)
+        {
+            --open[event.id];
+        }
+    }
+    int began = 0;
+    for (const auto& [id, count] : open)
+    {
+        EXPECT_EQ(count, 0) << "scrape " << id << " never ended";
+        ++began;
+    }
+    EXPECT_GT(began, 5);
+}
+
+TEST(Events, ImpactReportsApproachSpeedBeforeTheSolverAndItsImpulse)
+{
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 5.5f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.Attach();
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    std::vector<EffectEvent> impacts;
+    float fastestFall = 0.0f;
+    for (int i = 0; i < 120; ++i)
+    {
+        fastestFall = std::max(fastestFall, -box->GetLinearVelocity().y);
+        scene.Step();
+        for (const EffectEvent& event : fx.Events())
+        {
+            if (event.type == EffectEventType::impact)
+            {
+                impacts.push_back(event);
+            }
+        }
+    }
+    ASSERT_EQ(impacts.size(), 1u);
+    // Falling 5 m: about sqrt(2 g h) = 10 m/s; what the step saw before the solver acted.
+    EXPECT_NEAR(impacts[0].approachSpeed, fastestFall, 0.2f);
+    EXPECT_GT(impacts[0].approachSpeed, 9.0f);
+    EXPECT_GT(impacts[0].normalImpulse, 0.5f * impacts[0].approachSpeed) << "1 kg stopped: impulse ~ m v";
+    EXPECT_NEAR(impacts[0].normal.y, -1.0f, 1e-3f);
+    EXPECT_NEAR(impacts[0].point.y, 0.0f, 0.1f);
+    // The default preset bursts sparks on a hard steel-on-concrete hit: 6 per m/s above 2, at most 40.
+    EXPECT_GE(scene.Spawned("sparks"), 40u);
+}
+
+TEST(Events, GentleTouchIsNoImpactAndThresholdIsPerRule)
+{
+    auto impactsFor = [](float threshold, float height)
+    {
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f + height), 0.5f, 0.5f, 0.5f);
+        EffectsConfig config = DefaultPreset();
+        config.rules[0].impactThreshold = threshold;
+        Effects& fx = scene.Attach(config);
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        int impacts = 0;
+        for (int i = 0; i < 90; ++i)
+        {
+            scene.Step();
+            for (const EffectEvent& event : fx.Events())
+            {
+                impacts += event.type == EffectEventType::impact ? 1 : 0;
+            }
+        }
+        return impacts;
+    };
+    EXPECT_EQ(impactsFor(2.0f, 0.01f), 0);
+    EXPECT_EQ(impactsFor(2.0f, 1.0f), 1); // ~4.4 m/s
+    EXPECT_EQ(impactsFor(6.0f, 1.0f), 0);
+}
+
+TEST(Events, OrderIsDeterministicAndTheListenerSeesTheArray)
+{
+    auto run = []
+    {
+        ScrapeScene scene;
+        b2Body* other = scene.CreateBox(b2Vec2(-3.0f, 2.5f), 0.5f, 0.5f, 0.5f);
+        scene.effects->SetMaterial(other, scene.Material("steel"));
+        std::vector<EffectEvent> all;
+        for (int i = 0; i < 120; ++i)
+        {
+            other->SetLinearVelocity(b2Vec2(-5.0f, other->GetLinearVelocity().y));
+            scene.box->SetLinearVelocity(b2Vec2(i < 60 ? 5.0f : 0.0f, scene.box->GetLinearVelocity().y));
+            scene.Step();
+            all.insert(all.end(), scene.effects->Events().begin(), scene.effects->Events().end());
+        }
+        EXPECT_EQ(scene.log.events.size(), all.size());
+        for (std::size_t i = 0; i < all.size() && i < scene.log.events.size(); ++i)
+        {
+            EXPECT_EQ(scene.log.events[i].id, all[i].id);
+            EXPECT_EQ(scene.log.events[i].type, all[i].type);
+        }
+        std::vector<std::tuple<int, std::uint32_t, std::uint64_t, float, float>> summary;
+        for (const EffectEvent& event : all)
+        {
+            summary.emplace_back(static_cast<int>(event.type), event.id, event.step, event.intensity,
+                                 event.point.x);
+        }
+        return summary;
+    };
+    auto first = run();
+    EXPECT_GT(first.size(), 100u);
+    EXPECT_EQ(first, run());
+}
+
+} // namespace cfx::test

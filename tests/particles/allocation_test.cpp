@@ -1,0 +1,130 @@
+// Steady state is allocation-free: this binary replaces the global operator new with one that counts,
+// warms a particle system up (static cache built, helper thread started, vectors grown), then steps it
+// with spawning, dying, recycling, moving bodies and both threads, and asks for zero allocations.
+// Body-backed particles are Box2D's to allocate (its block allocator), so they are not part of this.
+#include "test_world.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <gtest/gtest.h>
+#include <new>
+
+namespace
+{
+
+std::atomic<long> g_allocations{0};
+
+void* Allocate(std::size_t size)
+{
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* memory = std::malloc(size == 0 ? 1 : size))
+    {
+        return memory;
+    }
+    throw std::bad_alloc();
+}
+
+} // namespace
+
+void* operator new(std::size_t size)
+{
+    return Allocate(size);
+}
+void* operator new[](std::size_t size)
+{
+    return Allocate(size);
+}
+void operator delete(void* memory) noexcept
+{
+    std::free(memory);
+}
+void operator delete[](void* memory) noexcept
+{
+    std::free(memory);
+}
+void operator delete(void* memory, std::size_t) noexcept
+{
+    std::free(memory);
+}
+void operator delete[](void* memory, std::size_t) noexcept
+{
+    std::free(memory);
+}
+
+namespace cfx::test
+{
+
+namespace
+{
+
+void RunSteadyState(RecyclePolicy policy)
+{
+    TestWorld scene;
+    scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 2.0f), 1.0f, 0.5f, 0.5f);
+    b2Body* spinner = scene.CreateBox(b2Vec2(4.0f, 1.0f), 1.0f, 0.1f, 0.5f, b2_kinematicBody);
+    spinner->SetAngularVelocity(3.0f);
+    std::vector<ParticleTypeDef> types(2);
+    types[0].name = "short";
+    types[0].lifetime = 0.5f;
+    types[1].name = "long";
+    types[1].lifetime = 3.0f;
+    types[1].restitution = 0.6f;
+    ParticleSystemOptions options;
+    options.threads = 2;
+    options.minParticlesPerThread = 64;
+    ParticleSystem particles(*scene.world, types, ParticleBudget{2000, policy}, options);
+    std::uint32_t seed = 11;
+    auto next = [&]()
+    {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<float>(seed >> 8) / 16777216.0f;
+    };
+    auto step = [&]()
+    {
+        for (int k = 0; k < 60; ++k) // more than the pool holds over time: recycling
+        {
+            particles.Spawn(ParticleSpawn{b2Vec2(-6.0f + 12.0f * next(), 0.1f + 4.0f * next()),
+                                          b2Vec2(-4.0f + 8.0f * next(), -4.0f + 8.0f * next()),
+                                          0.3f + 0.7f * next(),
+                                          ParticleTypeId{static_cast<std::uint16_t>(k % 2)}});
+        }
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        particles.Step(1.0f / 60.0f, scene.world->GetGravity());
+    };
+    for (int i = 0; i < 120; ++i)
+    {
+        step();
+    }
+    ASSERT_EQ(particles.ThreadsUsed(), 2u);
+    ASSERT_GT(particles.Recycled(), 0u);
+    const long before = g_allocations.load();
+    for (int i = 0; i < 120; ++i)
+    {
+        step();
+    }
+    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 120 warmed-up steps";
+    EXPECT_GT(box->GetPosition().y, -1.0f);
+}
+
+} // namespace
+
+TEST(ParticleAllocation, NoneOnceWarmedUpOldestFirst)
+{
+    RunSteadyState(RecyclePolicy::oldest);
+}
+
+TEST(ParticleAllocation, NoneOnceWarmedUpLowestLife)
+{
+    RunSteadyState(RecyclePolicy::lowestLife);
+}
+
+TEST(ParticleAllocation, TheCounterCounts)
+{
+    const long before = g_allocations.load();
+    auto* probe = new std::vector<int>(10);
+    delete probe;
+    EXPECT_EQ(g_allocations.load() - before, 2);
+}
+
+} // namespace cfx::test

@@ -1,0 +1,400 @@
+// The particle pool against the world: sweeps at speed, materials, moving bodies, the static cache's
+// contract, threads, recycling, and the same behaviour with a body per particle.
+#include "particles/particle_pool_fixture.h"
+
+#include <box2d/b2_distance.h>
+#include <box2d/box2d.h>
+#include <cstring>
+#include <gtest/gtest.h>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+b2Body* StaticChain(b2World& world, float halfWidth, float spacing, float height)
+{
+    std::vector<b2Vec2> vertices;
+    for (float x = halfWidth; x >= -halfWidth - 1e-4f; x -= spacing)
+    {
+        vertices.emplace_back(x, height);
+    }
+    b2ChainShape chain;
+    chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()),
+                      vertices.front() + b2Vec2(1.0f, 0.0f), vertices.back() - b2Vec2(1.0f, 0.0f));
+    b2BodyDef def;
+    b2Body* body = world.CreateBody(&def);
+    body->CreateFixture(&chain, 0.0f);
+    return body;
+}
+
+// Distance from a point to a fixture's core shape (0 inside).
+float DistanceTo(const b2Fixture& fixture, b2Vec2 point)
+{
+    b2DistanceInput input;
+    input.proxyA.Set(fixture.GetShape(), 0);
+    b2CircleShape dot;
+    dot.m_radius = 0.0f;
+    input.proxyB.Set(&dot, 0);
+    input.transformA = fixture.GetBody()->GetTransform();
+    input.transformB.Set(point, 0.0f);
+    input.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput output;
+    b2Distance(&output, &cache, &input);
+    return fixture.TestPoint(point) ? 0.0f : output.distance;
+}
+
+} // namespace
+
+TEST(ParticlePool, NoTunnellingThroughAThinChainAtFiftyMetresPerSecond)
+{
+    Pool scene({Ball(0.3f)}, {512, RecyclePolicy::oldest});
+    StaticChain(*scene.world, 40.0f, 0.5f, 0.0f);
+    std::uint32_t seed = 7;
+    auto next = [&]()
+    {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<float>(seed >> 8) / 16777216.0f;
+    };
+    for (int i = 0; i < 400; ++i)
+    {
+        const float angle = -3.14159265f * (0.1f + 0.8f * next()); // downward, up to 18 degrees off flat
+        scene.Add(b2Vec2(-10.0f + 20.0f * next(), 0.06f + 3.0f * next()),
+                  50.0f * b2Vec2(std::cos(angle), std::sin(angle)));
+    }
+    for (int step = 0; step < 25; ++step)
+    {
+        scene.StepAll();
+        for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+        {
+            ASSERT_GE(scene.Position(i).y, 0.05f - 1e-3f) << "particle " << i << " step " << step;
+        }
+    }
+}
+
+TEST(ParticlePool, ChainsAreOneSided)
+{
+    Pool scene({Ball()});
+    StaticChain(*scene.world, 20.0f, 1.0f, 3.0f);
+    scene.Add(b2Vec2(0.3f, 1.0f), b2Vec2(0.0f, 10.0f)); // from below: through the back, lands on the front
+    for (int i = 0; i < 180; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 3.05f, 1e-3f);
+}
+
+TEST(ParticlePool, RestitutionMixesWithTheFixtureAsBox2DDoes)
+{
+    Pool scene({Ball(0.0f)});
+    b2Body* ground = scene.CreateGround();
+    ground->GetFixtureList()->SetRestitution(0.9f); // max(0, 0.9): bouncy
+    scene.Add(b2Vec2(0.0f, 2.0f));
+    float highestAfterBounce = 0.0f;
+    bool bounced = false;
+    for (int i = 0; i < 90; ++i)
+    {
+        scene.StepAll();
+        bounced = bounced || scene.Velocity(0).y > 3.0f;
+        if (bounced)
+        {
+            highestAfterBounce = std::max(highestAfterBounce, scene.Position(0).y);
+        }
+    }
+    EXPECT_TRUE(bounced);
+    EXPECT_GT(highestAfterBounce, 1.0f);
+}
+
+TEST(ParticlePool, FrictionMixesWithTheFixtureAsBox2DDoes)
+{
+    auto slide = [](float groundFriction)
+    {
+        Pool scene({Ball(0.0f, 1.0f)});
+        scene.CreateGround(groundFriction);
+        scene.Add(b2Vec2(0.0f, 0.05f), b2Vec2(5.0f, 0.0f));
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.StepAll();
+        }
+        return scene.Position(0).x;
+    };
+    const float onIce = slide(0.0f); // sqrt(1 * 0) = 0: slides freely
+    const float onRubber = slide(1.0f);
+    EXPECT_NEAR(onIce, 5.0f, 0.05f);
+    EXPECT_LT(onRubber, 3.0f);
+}
+
+TEST(ParticlePool, MovingBoxPushesParticlesAndNeverLeavesOneInside)
+{
+    Pool scene({Ball(0.2f)}, {256, RecyclePolicy::oldest});
+    scene.CreateGround();
+    b2Body* pusher = scene.CreateBox(b2Vec2(-3.0f, 0.5f), 0.5f, 0.45f, 0.5f, b2_kinematicBody);
+    pusher->SetLinearVelocity(b2Vec2(6.0f, 0.0f));
+    for (int i = 0; i < 100; ++i)
+    {
+        scene.Add(b2Vec2(-2.0f + 0.04f * static_cast<float>(i), 0.05f));
+    }
+    for (int step = 0; step < 60; ++step)
+    {
+        scene.StepAll();
+        for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+        {
+            ASSERT_GE(DistanceTo(*pusher->GetFixtureList(), scene.Position(i)), 0.05f - 2e-3f)
+                << "particle " << i << " step " << step;
+        }
+    }
+    // Everything was in the box's path: all are now ahead of it or thrown over it.
+    for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+    {
+        const b2Vec2 p = scene.Position(i);
+        EXPECT_TRUE(p.x > pusher->GetPosition().x + 0.5f || p.y > 0.9f) << i;
+    }
+}
+
+TEST(ParticlePool, SpinningBodyNeverLeavesParticlesInside)
+{
+    Pool scene({Ball(0.0f)}, {1024, RecyclePolicy::oldest}, {}, b2Vec2(0.0f, 0.0f));
+    b2Body* blade = scene.CreateBox(b2Vec2(0.0f, 0.0f), 2.0f, 0.1f, 0.5f, b2_kinematicBody);
+    blade->SetAngularVelocity(4.0f);
+    for (int x = -10; x <= 10; ++x)
+    {
+        for (int y = -10; y <= 10; ++y)
+        {
+            const b2Vec2 p(0.2f * static_cast<float>(x), 0.2f * static_cast<float>(y));
+            if (DistanceTo(*blade->GetFixtureList(), p) > 0.06f)
+            {
+                scene.Add(p);
+            }
+        }
+    }
+    for (int step = 0; step < 60; ++step)
+    {
+        scene.StepAll();
+        for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+        {
+            ASSERT_GE(DistanceTo(*blade->GetFixtureList(), scene.Position(i)), 0.05f - 2e-3f)
+                << "particle " << i << " step " << step;
+        }
+    }
+}
+
+TEST(ParticlePool, PlatformCarriesAParticle)
+{
+    Pool scene({Ball(0.0f, 0.8f)});
+    b2Body* platform = scene.CreateBox(b2Vec2(0.0f, 0.0f), 2.0f, 0.25f, 0.8f, b2_kinematicBody);
+    platform->SetLinearVelocity(b2Vec2(1.0f, 2.0f));
+    scene.Add(b2Vec2(0.0f, 0.3f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    const b2Vec2 top = platform->GetPosition() + b2Vec2(0.0f, 0.25f + 0.05f);
+    EXPECT_NEAR(scene.Position(0).y, top.y, 0.02f) << "rides on top";
+    EXPECT_NEAR(scene.Position(0).x, 1.0f, 0.1f) << "carried sideways by friction";
+}
+
+TEST(ParticlePool, StaticCacheFollowsCreatedMovedAndDestroyedFixtures)
+{
+    Pool scene({Ball(0.0f)});
+    b2Body* ground = scene.CreateGround();
+    scene.Add(b2Vec2(0.0f, 0.5f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 1e-3f);
+    const std::uint64_t builds = scene.system->StaticGeometryBuilds();
+    for (int i = 0; i < 30; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), builds) << "nothing changed: no rebuild";
+
+    // A fixture added to an existing static body, above the particle's path.
+    b2PolygonShape shelf;
+    shelf.SetAsBox(1.0f, 0.1f, b2Vec2(5.0f, 2.0f), 0.0f);
+    ground->CreateFixture(&shelf, 0.0f);
+    scene.Add(b2Vec2(5.0f, 4.0f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(1).y, 2.15f, 1e-3f) << "landed on the new shelf";
+
+    // The shelf destroyed (no listener hears of it): the particle falls to the ground.
+    ground->DestroyFixture(ground->GetFixtureList());
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(1).y, 0.05f, 1e-3f) << "the shelf is gone";
+
+    // The ground moved down by a metre: both follow it.
+    ground->SetTransform(b2Vec2(0.0f, -1.0f), 0.0f);
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, -0.95f, 1e-3f);
+
+    // The ground destroyed: everything falls.
+    scene.world->DestroyBody(ground);
+    for (int i = 0; i < 30; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_LT(scene.Position(0).y, -2.0f);
+}
+
+TEST(ParticlePool, ResultsAreIdenticalWithOneOrTwoThreads)
+{
+    auto run = [](unsigned threads)
+    {
+        ParticleSystemOptions options;
+        options.threads = threads;
+        options.minParticlesPerThread = 16;
+        auto scene = std::make_unique<Pool>(std::vector<ParticleTypeDef>{Ball(0.4f), Ball(0.1f, 0.9f)},
+                                            ParticleBudget{600, RecyclePolicy::oldest}, options);
+        StaticChain(*scene->world, 20.0f, 0.7f, 0.0f);
+        b2Body* box = scene->CreateBox(b2Vec2(0.0f, 3.0f), 1.0f, 0.5f, 0.5f);
+        box->SetAngularVelocity(2.0f);
+        std::uint32_t seed = 3;
+        auto next = [&]()
+        {
+            seed = seed * 1664525u + 1013904223u;
+            return static_cast<float>(seed >> 8) / 16777216.0f;
+        };
+        for (int step = 0; step < 120; ++step)
+        {
+            for (int k = 0; k < 8; ++k)
+            {
+                scene->Add(b2Vec2(-5.0f + 10.0f * next(), 1.0f + 5.0f * next()),
+                           b2Vec2(-5.0f + 10.0f * next(), -5.0f + 10.0f * next()), 0.2f + 0.8f * next(),
+                           static_cast<std::uint16_t>(k % 2));
+            }
+            scene->StepAll();
+        }
+        return scene;
+    };
+    const auto one = run(1);
+    const auto two = run(2);
+    EXPECT_EQ(one->system->ThreadsUsed(), 1u);
+    EXPECT_EQ(two->system->ThreadsUsed(), 2u);
+    ASSERT_EQ(one->system->Count(), two->system->Count());
+    ASSERT_GT(one->system->Count(), 100u);
+    for (std::uint32_t i = 0; i < one->system->Count(); ++i)
+    {
+        const b2Vec2 a = one->Position(i), b = two->Position(i);
+        const b2Vec2 va = one->Velocity(i), vb = two->Velocity(i);
+        ASSERT_EQ(std::memcmp(&a, &b, sizeof(a)), 0) << i;
+        ASSERT_EQ(std::memcmp(&va, &vb, sizeof(va)), 0) << i;
+        ASSERT_EQ(one->Life(i), two->Life(i)) << i;
+    }
+}
+
+TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
+{
+    ParticleTypeDef quick = Ball();
+    quick.lifetime = 1.0f;
+    ParticleTypeDef slow = Ball();
+    slow.lifetime = 10.0f;
+    Pool scene({quick, slow}, {4, RecyclePolicy::lowestLife});
+    scene.Add(b2Vec2(0.0f, 5.0f), {}, 0.9f, 0); // 0.9 s left
+    scene.Add(b2Vec2(1.0f, 5.0f), {}, 0.2f, 1); // 2 s left
+    scene.Add(b2Vec2(2.0f, 5.0f), {}, 0.5f, 0); // 0.5 s left
+    scene.Add(b2Vec2(3.0f, 5.0f), {}, 0.3f, 0); // 0.3 s left: the first to go
+    scene.Add(b2Vec2(9.0f, 5.0f), {}, 1.0f, 0);
+    ASSERT_EQ(scene.system->Count(), 4u);
+    EXPECT_EQ(scene.system->Recycled(), 1u);
+    EXPECT_EQ(scene.Position(3).x, 9.0f) << "took the place of the one with 0.3 s left";
+    scene.Add(b2Vec2(8.0f, 5.0f), {}, 1.0f, 0);
+    EXPECT_EQ(scene.Position(2).x, 8.0f) << "then the one with 0.5 s left";
+    EXPECT_EQ(scene.Position(0).x, 0.0f);
+    EXPECT_EQ(scene.Position(1).x, 1.0f);
+}
+
+TEST(ParticlePool, ReportsItsMemory)
+{
+    Pool scene({Ball()}, {1000, RecyclePolicy::oldest});
+    EXPECT_EQ(scene.system->BytesPerSlot(), 5 * sizeof(float) + sizeof(std::uint16_t) + sizeof(std::uint8_t));
+    EXPECT_GE(scene.system->MemoryBytes(), 1000 * scene.system->BytesPerSlot());
+}
+
+// The same scenarios through a body per particle: what the outside sees does not change.
+class BothModes : public ::testing::TestWithParam<ParticleBackend>
+{
+};
+
+TEST_P(BothModes, BounceThenRestOnTheGround)
+{
+    Pool scene({Ball(0.5f, 0.9f, GetParam())});
+    scene.CreateGround();
+    scene.Add(b2Vec2(0.0f, 2.0f));
+    bool bounced = false;
+    for (int i = 0; i < 600; ++i)
+    {
+        const float before = scene.Velocity(0).y;
+        scene.StepAll();
+        bounced = bounced || (before < -3.0f && scene.Velocity(0).y > 2.0f);
+    }
+    EXPECT_TRUE(bounced);
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 0.01f) << "a body rests on Box2D's skin, within 1 cm";
+    EXPECT_LT(scene.Velocity(0).Length(), 0.05f);
+}
+
+TEST_P(BothModes, HardCapRecyclesTheOldest)
+{
+    ParticleTypeDef type = Ball(0.0f, 0.5f, GetParam());
+    type.gravityScale = 0.0f;
+    Pool scene({type}, {3, RecyclePolicy::oldest});
+    for (int i = 0; i < 5; ++i)
+    {
+        scene.Add(b2Vec2(static_cast<float>(i), 5.0f));
+    }
+    scene.StepAll();
+    ASSERT_EQ(scene.system->Count(), 3u);
+    EXPECT_EQ(scene.system->Recycled(), 2u);
+    EXPECT_NEAR(scene.Position(0).x, 2.0f, 1e-4f);
+    EXPECT_NEAR(scene.Position(2).x, 4.0f, 1e-4f);
+}
+
+TEST_P(BothModes, DiesWhenLifeRunsOut)
+{
+    ParticleTypeDef type = Ball(0.0f, 0.5f, GetParam());
+    type.lifetime = 0.5f;
+    Pool scene({type});
+    scene.Add(b2Vec2(0.0f, 5.0f));
+    for (int i = 0; i < 29; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_EQ(scene.system->Count(), 1u);
+    scene.StepAll();
+    scene.StepAll();
+    EXPECT_EQ(scene.system->Count(), 0u);
+    EXPECT_EQ(scene.world->GetBodyCount(), 0) << "a body-backed particle's body goes with it";
+}
+
+TEST_P(BothModes, FilterDecidesWhatIsHit)
+{
+    ParticleTypeDef type = Ball(0.0f, 0.5f, GetParam());
+    type.maskBits = 0x0004;
+    Pool scene({type});
+    scene.CreateGround();
+    scene.Add(b2Vec2(0.0f, 1.0f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_LT(scene.Position(0).y, -1.0f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Particles, BothModes,
+                         ::testing::Values(ParticleBackend::pool, ParticleBackend::body),
+                         [](const ::testing::TestParamInfo<ParticleBackend>& param)
+                         { return param.param == ParticleBackend::pool ? "Pool" : "Bodies"; });
+
+} // namespace cfx::test

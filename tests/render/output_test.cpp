@@ -1,0 +1,88 @@
+// Output paths: which kind a path asks for, how sequence files are numbered, finding ffmpeg.
+#include "contactfx/render/cairo_renderer.h"
+#include "contactfx/render/frame_output.h"
+
+#include <cstdlib>
+#include <gtest/gtest.h>
+
+namespace cfx::test
+{
+
+using render::ClassifyOutput;
+using render::OutputKind;
+using render::SequenceFile;
+
+TEST(Output, KindFollowsTheExtensionInAnyCase)
+{
+    EXPECT_EQ(ClassifyOutput("out/frame.png"), OutputKind::png);
+    EXPECT_EQ(ClassifyOutput("frame.PNG"), OutputKind::png);
+    EXPECT_EQ(ClassifyOutput("out/demo.mp4"), OutputKind::mp4);
+    EXPECT_EQ(ClassifyOutput("demo.Gif"), OutputKind::gif);
+    EXPECT_EQ(ClassifyOutput("frames/frame_%04d.png"), OutputKind::pngSequence);
+    EXPECT_EQ(ClassifyOutput("frames/f%d.png"), OutputKind::pngSequence);
+    EXPECT_EQ(ClassifyOutput("100%%.png"), OutputKind::png);
+}
+
+TEST(Output, RefusesUnknownExtensionsAndBadPatterns)
+{
+    for (const char* bad : {"demo.avi", "demo", "frames/", "a_%d_%d.png", "a_%s.png", "a_%4d.png", "a_%.png",
+                            "frames_%d/f.png", "clip_%03d.mp4"})
+    {
+        EXPECT_THROW(ClassifyOutput(bad), std::invalid_argument) << bad;
+    }
+    try
+    {
+        ClassifyOutput("demo.avi");
+    }
+    catch (const std::invalid_argument& error)
+    {
+        EXPECT_NE(std::string(error.what()).find(".avi"), std::string::npos) << error.what();
+    }
+}
+
+TEST(Output, SequenceFilesAreZeroPaddedToThePatternsWidth)
+{
+    EXPECT_EQ(SequenceFile("frames/frame_%04d.png", 7), std::filesystem::path("frames/frame_0007.png"));
+    EXPECT_EQ(SequenceFile("f%d.png", 12), std::filesystem::path("f12.png"));
+    EXPECT_EQ(SequenceFile("f%02d.png", 123), std::filesystem::path("f123.png"));
+    EXPECT_EQ(SequenceFile("100%%_%03d.png", 5), std::filesystem::path("100%_005.png"));
+    EXPECT_EQ(SequenceFile("still.png", 5), std::filesystem::path("still.png"));
+}
+
+TEST(Output, FindsProgramsOnThePathOnly)
+{
+    const char* saved = std::getenv("PATH");
+    const std::string path = saved != nullptr ? saved : "";
+    EXPECT_FALSE(render::FindProgram("sh").empty()); // any Debian system has /bin/sh
+    const std::filesystem::path empty = std::filesystem::temp_directory_path() / "contactfx_empty_path";
+    std::filesystem::create_directories(empty);
+    ::setenv("PATH", empty.c_str(), 1);
+    EXPECT_TRUE(render::FindProgram("sh").empty());
+    ::setenv("PATH", path.c_str(), 1);
+}
+
+TEST(Output, ASequenceLeftUnfinishedRemovesTheFramesItWrote)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "contactfx_test_sequence_sink";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    render::CairoRenderer frame(8, 6);
+    frame.Begin(render::MakeCamera(8, 6, 1.0f, b2Vec2(0.0f, 0.0f)));
+    {
+        render::PngSequenceSink sink(dir / "f_%02d.png");
+        sink.Write(frame);
+        sink.Write(frame);
+        EXPECT_TRUE(std::filesystem::exists(dir / "f_00.png"));
+        EXPECT_TRUE(std::filesystem::exists(dir / "f_01.png"));
+        // No Finish: a render that failed midway.
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+    {
+        render::PngSequenceSink sink(dir / "f_%02d.png");
+        sink.Write(frame);
+        sink.Finish();
+    }
+    EXPECT_TRUE(std::filesystem::exists(dir / "f_00.png"));
+}
+
+} // namespace cfx::test

@@ -1,0 +1,185 @@
+// Scene fixtures -> materials: the `material` property first, then the config's assignment rules, so that
+// the tutorial scene without a single `material` property gets exactly the tutorial's materials.
+#include "contactfx/scene/text_file.h"
+#include "contactfx/sim/simulation.h"
+#include "scene/rube_test_util.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace cfx
+{
+
+namespace
+{
+
+const std::filesystem::path kTutorialScene =
+    std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes/physics_driven_particles.json";
+
+// The scene's JSON with every fixture custom property named `material` removed; counts them in `removed`.
+std::string WithoutMaterialProperties(const std::string& text, int& removed)
+{
+    nlohmann::json scene = nlohmann::json::parse(text);
+    removed = 0;
+    for (nlohmann::json& body : scene["body"])
+    {
+        for (nlohmann::json& fixture : body["fixture"])
+        {
+            if (!fixture.contains("customProperties"))
+            {
+                continue;
+            }
+            nlohmann::json& properties = fixture["customProperties"];
+            for (std::size_t k = properties.size(); k-- > 0;)
+            {
+                if (properties[k]["name"] == "material")
+                {
+                    properties.erase(k);
+                    ++removed;
+                }
+            }
+        }
+    }
+    return scene.dump();
+}
+
+std::vector<std::string> MaterialNames(const Scene& scene, const EffectsConfig& config)
+{
+    std::vector<std::string> names;
+    for (MaterialId id : ResolveSceneMaterials(scene, config, "scene.json"))
+    {
+        names.push_back(id.IsValid() ? config.materials[id.index] : "none");
+    }
+    return names;
+}
+
+std::vector<Diagnostic> ResolveErrors(const Scene& scene, const EffectsConfig& config)
+{
+    try
+    {
+        ResolveSceneMaterials(scene, config, "scene.json");
+    }
+    catch (const InputError& error)
+    {
+        return error.Diagnostics();
+    }
+    ADD_FAILURE() << "expected InputError";
+    return {};
+}
+
+} // namespace
+
+TEST(SceneMaterials, StrippedTutorialSceneGetsTheSameMaterials)
+{
+    const std::string text = ReadTextFile(kTutorialScene);
+    int removed = 0;
+    const std::string stripped = WithoutMaterialProperties(text, removed);
+    const Scene original = LoadRubeString(text, "tutorial.json");
+    const Scene plain = LoadRubeString(stripped, "plain.json");
+    ASSERT_EQ(static_cast<std::size_t>(removed), original.fixtures.size()) << "every fixture had one";
+
+    for (const EffectsConfig& config : {TutorialPreset(), DefaultPreset()})
+    {
+        SCOPED_TRACE(config.name);
+        const std::vector<std::string> expected = MaterialNames(original, config);
+        EXPECT_EQ(MaterialNames(plain, config), expected);
+        for (std::size_t f = 0; f < original.fixtures.size(); ++f)
+        {
+            EXPECT_EQ(expected[f], *original.fixtures[f].properties.FindString("material"))
+                << "the property decides when present";
+        }
+        EffectsConfig noRules = config;
+        noRules.assignments.clear();
+        for (const std::string& name : MaterialNames(plain, noRules))
+        {
+            EXPECT_EQ(name, "none") << "without assignments nothing is guessed";
+        }
+    }
+}
+
+TEST(SceneMaterials, StrippedTutorialSceneRunsIdentically)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "contactfx_scene_materials";
+    std::filesystem::create_directories(dir);
+    int removed = 0;
+    WriteTextFileAtomically(dir / "plain.json",
+                            WithoutMaterialProperties(ReadTextFile(kTutorialScene), removed));
+    std::string stats[2];
+    const std::filesystem::path scenes[2] = {kTutorialScene, dir / "plain.json"};
+    for (int i = 0; i < 2; ++i)
+    {
+        SimulationDef def;
+        def.scene = scenes[i];
+        def.config = TutorialPreset();
+        def.drive = TutorialDrive();
+        Simulation simulation(def);
+        for (int step = 0; step < 240; ++step)
+        {
+            simulation.Step();
+        }
+        stats[i] = StatsJson(simulation.GetEffects(), def.hz);
+        EXPECT_GT(simulation.GetEffects().Stats().spawnedByType[0] +
+                      simulation.GetEffects().Stats().spawnedByType[2],
+                  0u);
+    }
+    EXPECT_EQ(stats[1], stats[0]);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(SceneMaterials, PropertyTakesPrecedenceAndNamesAreMatched)
+{
+    const std::string bodies =
+        test::Box(0.0f, 2, R"("name": "crate")") + "," +
+        test::Box(
+            3.0f, 2,
+            R"("name": "crate", "fixture": [{"name": "lid", "density": 1, "friction": 0.5, "customProperties":
+                      [{"name": "material", "string": "a"}], "circle": {"radius": 1}}])") +
+        "," + test::Box(6.0f, 0, R"("name": "floor")");
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    EffectsConfig config;
+    config.materials = {"a", "b"};
+    MaterialAssignment crates;
+    crates.material = "b";
+    crates.bodyName = "cr?te";
+    config.assignments = {crates};
+    EXPECT_EQ(MaterialNames(scene, config), (std::vector<std::string>{"b", "a", "none"}));
+}
+
+TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
+{
+    const std::string bodies =
+        test::Box(0.0f, 2, R"("fixture": [{"density": 1, "customProperties": [{"name": "material", "string":
+            "glass"}], "circle": {"radius": 1}}, {"density": 1, "customProperties": [{"name": "x", "int": 1},
+            {"name": "material", "int": 4}], "circle": {"radius": 1}}])");
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    const std::vector<Diagnostic> problems = ResolveErrors(scene, TutorialPreset());
+    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",
+                                    "unknown material \"glass\" (the effects config has: steel, rubber"))
+        << test::Dump(problems);
+    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[1].customProperties[1]", "as a string"))
+        << test::Dump(problems);
+    for (const Diagnostic& problem : problems)
+    {
+        EXPECT_EQ(problem.file, "scene.json");
+    }
+
+    Effects effects(*scene.world, EffectsDef{TutorialPreset()});
+    EXPECT_THROW(AssignSceneMaterials(scene, effects, "scene.json"), InputError);
+    for (const SceneFixture& fixture : scene.fixtures)
+    {
+        EXPECT_FALSE(effects.GetMaterial(fixture.fixture).IsValid());
+    }
+}
+
+TEST(SceneMaterials, PlainRubeSamplesGetMaterialsFromTheDefaultAssignments)
+{
+    const Scene car = LoadRubeFile(test::SharedDir() / "rube-samples" / "car.json");
+    int assigned = 0;
+    for (const std::string& name : MaterialNames(car, DefaultPreset()))
+    {
+        assigned += name != "none" ? 1 : 0;
+    }
+    EXPECT_GT(assigned, 0);
+}
+
+} // namespace cfx

@@ -1,0 +1,317 @@
+// What the testbed does without its window: the scene session (pause, single step, the car's keys,
+// following, zoom and pan), dragging bodies, and the live effects editor.
+#include "contactfx/scene/effects_json.h"
+#include "effects_editor.h"
+#include "mouse_drag.h"
+#include "session.h"
+#include "testbed/testbed_support.h"
+
+#include <box2d/b2_body.h>
+#include <box2d/b2_wheel_joint.h>
+#include <box2d/b2_world.h>
+#include <gtest/gtest.h>
+
+namespace cfx::testbed
+{
+
+namespace
+{
+
+const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
+constexpr int kViewWidth = 890;
+constexpr int kViewHeight = 720;
+
+struct Opened
+{
+    explicit Opened(const char* scene) : session(kScenesDir)
+    {
+        session.Open(*FindScene(scene));
+        session.ResetView(kViewWidth, kViewHeight);
+    }
+    void Advance(int frames)
+    {
+        for (int i = 0; i < frames; ++i)
+        {
+            session.Advance();
+        }
+    }
+    Session session;
+};
+
+b2Vec2 Near(const render::Camera& camera, b2Vec2 world)
+{
+    return camera.ToPixels(world);
+}
+
+} // namespace
+
+TEST(TestbedSession, OpensTheSceneWithItsViewAndKeepsItOnBadInput)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    EXPECT_EQ(session.Entry().name, "grinder");
+    const SceneView& view = session.Entry().view;
+    EXPECT_FLOAT_EQ(static_cast<float>(kViewHeight) / session.Camera().pixelsPerMetre, view.height);
+    EXPECT_EQ(session.Camera().center.x, view.center.x);
+
+    EffectsConfig invalid = DefaultPreset();
+    invalid.budget.capacity = 0;
+    EXPECT_THROW(session.Open(*FindScene("tutorial"), invalid), InputError);
+    EXPECT_EQ(session.Entry().name, "grinder");
+    opened.Advance(10);
+    EXPECT_EQ(session.Sim().Steps(), 10u);
+}
+
+TEST(TestbedSession, PauseHoldsAndSingleStepAdvancesOneStep)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    session.paused = true;
+    opened.Advance(5);
+    EXPECT_EQ(session.Sim().Steps(), 0u);
+    session.stepOnce = true;
+    opened.Advance(5);
+    EXPECT_EQ(session.Sim().Steps(), 1u);
+    EXPECT_FALSE(session.stepOnce);
+    session.paused = false;
+    opened.Advance(5);
+    EXPECT_EQ(session.Sim().Steps(), 6u);
+}
+
+TEST(TestbedSession, TheKeysTakeTheCarFromItsScript)
+{
+    // The demo script launches the car to the right; holding a drives it to the left instead.
+    Opened opened("tutorial");
+    Session& session = opened.session;
+    session.SetKeys(false, false, false);
+    EXPECT_FALSE(session.Manual());
+    for (int i = 0; i < 90; ++i)
+    {
+        session.SetKeys(true, false, false);
+        session.Advance();
+    }
+    EXPECT_TRUE(session.Manual());
+    EXPECT_LT(session.Sim().GetCar()->Body()->GetLinearVelocity().x, -1.0f);
+
+    const auto* front =
+        static_cast<const b2WheelJoint*>(session.Sim().GetScene().FindJoint("suspension_front")->joint);
+    EXPECT_FALSE(front->IsMotorEnabled()); // rear-wheel drive
+    session.ToggleFourWheelDrive();
+    opened.Advance(1);
+    EXPECT_TRUE(front->IsMotorEnabled());
+    session.SetKeys(false, false, true); // brake: both motors hold the wheels
+    opened.Advance(1);
+    EXPECT_TRUE(front->IsMotorEnabled());
+    EXPECT_EQ(front->GetMotorSpeed(), 0.0f);
+}
+
+TEST(TestbedSession, FollowingKeepsTheCarInPlaceOnScreenAndPanningStopsIt)
+{
+    Opened opened("tutorial");
+    Session& session = opened.session;
+    ASSERT_TRUE(session.followCar);
+    const b2Body& car = *session.Sim().GetCar()->Body();
+    opened.Advance(1);
+    const b2Vec2 onScreen = Near(session.Camera(), car.GetPosition());
+    opened.Advance(120);
+    EXPECT_NEAR(Near(session.Camera(), car.GetPosition()).x, onScreen.x, 0.01f);
+    // Vertically the view holds the car's lowest point, which moves a little as the car tilts.
+    EXPECT_NEAR(Near(session.Camera(), car.GetPosition()).y, onScreen.y, 10.0f);
+
+    const b2Vec2 center = session.Camera().center;
+    session.Pan(b2Vec2(100.0f, 0.0f)); // content moves right: the view looks further left
+    EXPECT_FALSE(session.followCar);
+    EXPECT_NEAR(session.Camera().center.x, center.x - 100.0f / session.Camera().pixelsPerMetre, 1e-3f);
+    opened.Advance(60);
+    EXPECT_GT(std::abs(Near(session.Camera(), car.GetPosition()).x - onScreen.x), 10.0f);
+}
+
+TEST(TestbedSession, ZoomKeepsThePointUnderTheCursorAndResizeKeepsTheHeightShown)
+{
+    Opened opened("rockslide");
+    Session& session = opened.session;
+    const b2Vec2 anchor(-12.0f, 3.0f);
+    const b2Vec2 before = session.Camera().ToPixels(anchor);
+    const float ppm = session.Camera().pixelsPerMetre;
+    session.Zoom(2.0f, anchor); // shows twice as much
+    EXPECT_FLOAT_EQ(session.Camera().pixelsPerMetre, ppm / 2.0f);
+    EXPECT_NEAR(session.Camera().ToPixels(anchor).x, before.x, 1e-2f);
+    EXPECT_NEAR(session.Camera().ToPixels(anchor).y, before.y, 1e-2f);
+
+    const float metresHigh = static_cast<float>(session.Camera().height) / session.Camera().pixelsPerMetre;
+    session.Resize(400, 300);
+    EXPECT_EQ(session.Camera().width, 400);
+    EXPECT_FLOAT_EQ(static_cast<float>(session.Camera().height) / session.Camera().pixelsPerMetre,
+                    metresHigh);
+    session.ResetView(400, 300);
+    EXPECT_FLOAT_EQ(300.0f / session.Camera().pixelsPerMetre, session.Entry().view.height);
+}
+
+TEST(TestbedSession, RestartStartsOverWithTheEffectsInForce)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    EffectsConfig edited = DefaultPreset();
+    edited.rules[0].threshold = 5.0f;
+    session.ApplyConfig(edited);
+    opened.Advance(30);
+    session.Restart();
+    EXPECT_EQ(session.Sim().Steps(), 0u);
+    EXPECT_EQ(session.Sim().GetEffects().Config(), edited);
+}
+
+TEST(TestbedMouseDrag, PullsTheGrabbedBodyAndLetsGo)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    Scene& scene = session.Sim().GetScene();
+    const int joints = scene.world->GetJointCount();
+    b2Body* bar = scene.FindBody("steel_bar")->body;
+    const b2Vec2 start = bar->GetPosition();
+
+    MouseDrag& drag = session.Drag();
+    EXPECT_FALSE(drag.Grab(scene, b2Vec2(-8.0f, 8.0f))); // empty space
+    EXPECT_FALSE(drag.Grab(scene, b2Vec2(0.0f, -1.0f))); // the static floor
+    EXPECT_FALSE(drag.Active());
+    ASSERT_TRUE(drag.Grab(scene, start));
+    EXPECT_TRUE(drag.Active());
+    EXPECT_EQ(scene.world->GetJointCount(), joints + 1);
+    drag.MoveTo(start + b2Vec2(0.0f, 3.0f));
+    opened.Advance(60);
+    EXPECT_GT(bar->GetPosition().y, start.y + 1.0f);
+    drag.Release();
+    EXPECT_FALSE(drag.Active());
+    EXPECT_EQ(scene.world->GetJointCount(), joints);
+}
+
+TEST(TestbedEffectsEditor, AppliesAValidDraftAndRefusesAnInvalidOne)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    EffectsEditor editor;
+    editor.Follow(session);
+    EXPECT_EQ(editor.draft, session.Sim().GetEffects().Config());
+
+    editor.draft.rules[0].threshold = -2.0f;
+    editor.Apply(session);
+    EXPECT_TRUE(editor.messageIsError);
+    ASSERT_FALSE(editor.problems.empty());
+    EXPECT_EQ(editor.problems.front().path, "rules[0].threshold");
+    EXPECT_EQ(session.Sim().GetEffects().Config(), DefaultPreset());
+
+    editor.draft.rules[0].threshold = 2.0f;
+    editor.Apply(session);
+    EXPECT_FALSE(editor.messageIsError) << editor.message;
+    EXPECT_TRUE(editor.problems.empty());
+    EXPECT_EQ(session.Sim().GetEffects().Config().rules[0].threshold, 2.0f);
+
+    editor.draft.rules[0].threshold = 9.0f;
+    editor.Follow(session, true); // revert
+    EXPECT_EQ(editor.draft.rules[0].threshold, 2.0f);
+}
+
+TEST(TestbedEffectsEditor, KeepsItsDraftUntilAnotherSimulationOpens)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    EffectsEditor editor;
+    editor.Follow(session);
+    editor.draft.rules[0].threshold = 9.0f; // an edit in progress
+    editor.Follow(session);
+    EXPECT_EQ(editor.draft.rules[0].threshold, 9.0f);
+    for (const char* scene : {"skidpad", "grinder"})
+    {
+        session.Open(*FindScene(scene));
+        editor.Follow(session);
+        EXPECT_EQ(editor.draft, session.Sim().GetEffects().Config()) << scene;
+        editor.draft.rules[0].threshold = 9.0f;
+    }
+    session.Restart();
+    editor.Follow(session);
+    EXPECT_EQ(editor.draft, session.Sim().GetEffects().Config());
+}
+
+TEST(TestbedEffectsEditor, SavesTheDraftAsAnEffectsConfigFile)
+{
+    Opened opened("grinder");
+    EffectsEditor editor;
+    editor.Follow(opened.session);
+    editor.draft.rules[0].particleType = "smoke";
+    const std::filesystem::path dir = test::ScratchDir("testbed_editor_save");
+    editor.savePath = (dir / "edited.effects.json").string();
+    editor.Save();
+    EXPECT_FALSE(editor.messageIsError) << editor.message;
+    EXPECT_EQ(LoadEffectsFile(editor.savePath), editor.draft);
+
+    editor.savePath = (dir / "missing" / "edited.effects.json").string();
+    editor.Save();
+    EXPECT_TRUE(editor.messageIsError);
+    EXPECT_NE(editor.message.find(editor.savePath), std::string::npos) << editor.message;
+
+    editor.savePath = (dir / "invalid.effects.json").string();
+    editor.draft.budget.capacity = 0;
+    editor.Save();
+    EXPECT_TRUE(editor.messageIsError);
+    EXPECT_FALSE(std::filesystem::exists(editor.savePath));
+}
+
+} // namespace cfx::testbed
+
+namespace cfx::testbed
+{
+
+TEST(TestbedEvents, TheSessionLogsScrapesAndImpactsAsTheyHappen)
+{
+    Session session(std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes");
+    session.Open(*FindScene("tutorial"));
+    session.ResetView(890, 720);
+    std::size_t begun = 0;
+    std::size_t impacts = 0;
+    for (int frame = 0; frame < 600; ++frame)
+    {
+        session.Advance();
+        for (const EffectEvent& event : session.Sim().GetEffects().Events())
+        {
+            begun += event.type == EffectEventType::scrapeBegan ? 1 : 0;
+            impacts += event.type == EffectEventType::impact ? 1 : 0;
+        }
+    }
+    ASSERT_GT(begun, 0u);
+    ASSERT_GT(impacts, 0u);
+    const std::deque<LoggedEvent>& log = session.Events().Entries();
+    ASSERT_FALSE(log.empty());
+    EXPECT_LE(log.size(), EventLog::kCapacity);
+    // Newest last, times in order, each with its line of text naming the pair.
+    for (std::size_t i = 1; i < log.size(); ++i)
+    {
+        EXPECT_LE(log[i - 1].time, log[i].time);
+    }
+    for (const LoggedEvent& logged : log)
+    {
+        EXPECT_NE(logged.text.find('+'), std::string::npos) << logged.text;
+    }
+    session.Restart();
+    EXPECT_TRUE(session.Events().Entries().empty()) << "a new simulation starts a new log";
+}
+
+TEST(TestbedEvents, DescribeNamesTypePairAndMeasure)
+{
+    EffectsConfig config = DefaultPreset();
+    EffectEvent impact;
+    impact.type = EffectEventType::impact;
+    impact.rule = RuleId{0};
+    impact.id = 7;
+    impact.approachSpeed = 4.25f;
+    const std::string text = DescribeEvent(impact, config, 1.5f);
+    EXPECT_NE(text.find("impact"), std::string::npos) << text;
+    EXPECT_NE(text.find("#7"), std::string::npos) << text;
+    EXPECT_NE(text.find("steel+concrete"), std::string::npos) << text;
+    EXPECT_NE(text.find("4.2"), std::string::npos) << text;
+    EffectEvent ended;
+    ended.type = EffectEventType::scrapeEnded;
+    ended.end = ScrapeEnd::asleep;
+    ended.rule = RuleId{1};
+    EXPECT_NE(DescribeEvent(ended, config, 2.0f).find("asleep"), std::string::npos);
+}
+
+} // namespace cfx::testbed
