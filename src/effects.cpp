@@ -75,7 +75,7 @@ Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
       m_tracker(m_rules, m_materials), m_particles(world, m_config.particleTypes, m_config.budget),
       m_destruction(std::make_unique<Destruction>(m_materials, m_tracker, def.destructionListener)),
-      m_emitter(std::make_unique<detail::Emitter>(def.seed)), m_eventListener(def.eventListener)
+      m_emitter(std::make_unique<detail::Emitter>(m_config, def.seed)), m_eventListener(def.eventListener)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});

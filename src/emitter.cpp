@@ -62,6 +62,14 @@ struct Emitter::RuleContext
     float dt;
 };
 
+Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed) : m_random(seed)
+{
+    for (const RuleDef& rule : config.rules)
+    {
+        m_ruleTypes.push_back(config.FindParticleType(rule.particleType));
+    }
+}
+
 void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker,
                    ParticleSystem& particles, EffectsStats& stats, std::vector<EffectEvent>& events, float dt)
 {
@@ -69,7 +77,7 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
     {
         const RuleId ruleId{static_cast<std::uint16_t>(ruleIndex)};
         const RuleDef& rule = config.rules[ruleIndex];
-        const ParticleTypeId typeId = config.FindParticleType(rule.particleType);
+        const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
         RuleContext context{
             world,  tracker,   particles, stats, events, rule, config.particleTypes[typeId.index],

@@ -22,7 +22,8 @@ namespace cfx::detail
 class Emitter
 {
 public:
-    explicit Emitter(std::uint64_t seed) : m_random(seed) {}
+    /// `config` must be valid (Validate) and is the one Emit will be given.
+    Emitter(const EffectsConfig& config, std::uint64_t seed);
 
     /// For every tracked contact of every rule: emits into `particles`, appends scrape and impact events
     /// to `events` (events.h gives the order), updates `stats`.
@@ -41,6 +42,7 @@ private:
                         float intensity, int count);
 
     Random m_random;
+    std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
 };
 
 } // namespace cfx::detail
