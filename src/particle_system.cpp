@@ -46,9 +46,8 @@ constexpr float kRestSpeed = 0.5f;
 constexpr unsigned kMaxThreads = 8;
 
 // Bytes of the arrays every step walks, per slot; the layout promise of the header.
-constexpr std::size_t kHotBytesPerSlot = 5 * sizeof(float) + sizeof(std::uint16_t) + sizeof(std::uint8_t);
-static_assert(kHotBytesPerSlot == 23,
-              "position, velocity, life, type and the resting mark: 23 bytes a particle");
+constexpr std::size_t kHotBytesPerSlot = 6 * sizeof(float) + sizeof(std::uint16_t);
+static_assert(kHotBytesPerSlot == 26, "position, velocity, life, clearance and type: 26 bytes a particle");
 static_assert(sizeof(particles::TypeStep) <= 64, "a type's step constants fit in a cache line");
 
 // Logical index and time left to live, for lowest-life recycling; ordered by time left, then age.
@@ -72,14 +71,14 @@ struct ParticleSystem::Impl
     // Hot: touched by every step, one entry per slot.
     std::vector<float> positionX, positionY, velocityX, velocityY, life;
     std::vector<std::uint16_t> type;
-    std::vector<std::uint8_t> resting;
+    std::vector<float> clearance;
     // Cold: bodies of body-backed particles (empty when no type is body-backed).
     std::vector<b2Body*> body;
     detail::PointerMap bodySet;
     std::uint32_t head = 0;
 
     particles::WorldGeometry geometry;
-    // What the resting marks were made under (see motion.h).
+    // What the resting marks and clearances were made under (see motion.h).
     float lastDt = 0.0f;
     b2Vec2 lastGravity{0.0f, 0.0f};
     std::uint64_t lastBuilds = 0;
@@ -96,7 +95,7 @@ struct ParticleSystem::Impl
         return particles::PoolArrays{positionX.data(), positionY.data(),
                                      velocityX.data(), velocityY.data(),
                                      life.data(),      type.data(),
-                                     resting.data(),   anyBodyBacked ? body.data() : nullptr,
+                                     clearance.data(), anyBodyBacked ? body.data() : nullptr,
                                      capacity,         head};
     }
 
@@ -188,7 +187,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     impl.velocityY.resize(m_capacity);
     impl.life.resize(m_capacity);
     impl.type.resize(m_capacity);
-    impl.resting.resize(m_capacity);
+    impl.clearance.resize(m_capacity);
     if (impl.anyBodyBacked)
     {
         impl.body.assign(m_capacity, nullptr);
@@ -253,7 +252,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.velocityY[slot] = spawn.velocity.y;
     impl.life[slot] = std::min(spawn.life, 1.0f);
     impl.type[slot] = spawn.type.index;
-    impl.resting[slot] = 0;
+    impl.clearance[slot] = 0.0f;
     if (impl.anyBodyBacked)
     {
         impl.body[slot] =
@@ -282,14 +281,14 @@ struct StepJob
     const particles::WorldGeometry* geometry;
     std::vector<b2Body*>* dead;
     float dt;
-    bool trustResting;
+    particles::StepTrust trust;
     std::array<std::uint32_t, kMaxThreads + 1> begin;
     std::array<std::uint32_t, kMaxThreads> kept;
 
     static void Run(void* context, unsigned part)
     {
         auto& job = *static_cast<StepJob*>(context);
-        job.kept[part] = particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trustResting,
+        job.kept[part] = particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust,
                                                  job.begin[part], job.begin[part + 1], job.dead[part]);
     }
 };
@@ -306,22 +305,29 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         particles::TypeStep& step = impl.steps[t];
         step.gravityDelta = (dt * params.gravityScale) * gravity;
         step.damping = 1.0f / (1.0f + dt * params.drag);
+        // Exactly as the step computes it from a zero velocity.
+        step.restVelocity =
+            b2Vec2((0.0f + step.gravityDelta.x) * step.damping, (0.0f + step.gravityDelta.y) * step.damping);
         step.lifeLoss = dt * params.lifeRate;
         step.side = particles::ParticleSide{params.radius, params.restitution,  params.friction,
                                             kRestSpeed,    params.categoryBits, params.maskBits};
-        step.collide = params.collide;
         step.bodyBacked = params.bodyBacked;
+        step.sweeps = params.collide && !params.bodyBacked;
     }
     const bool scan = collide && impl.anyPoolCollides && m_count > 0;
-    bool trustResting = false;
+    particles::StepTrust trust;
     if (scan)
     {
         impl.geometry.Scan(impl.world, impl.anyBodyBacked ? this : nullptr, dt);
-        trustResting = dt == impl.lastDt && gravity == impl.lastGravity &&
-                       impl.geometry.StaticBuilds() == impl.lastBuilds;
+        trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
+        trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
         impl.lastDt = dt;
         impl.lastGravity = gravity;
         impl.lastBuilds = impl.geometry.StaticBuilds();
+    }
+    else
+    {
+        impl.lastBuilds = 0; // particles move without collision: their clearances and marks go stale
     }
 
     const unsigned parts = std::clamp(m_count / impl.minPerThread, 1u, impl.threads);
@@ -330,7 +336,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
                 scan ? &impl.geometry : nullptr,
                 impl.dead.data(),
                 dt,
-                trustResting,
+                trust,
                 {},
                 {}};
     for (unsigned part = 0; part <= parts; ++part)

@@ -1,9 +1,9 @@
 // contactfx: the particles.
 //
 // A pool of particles with a hard cap, in structure-of-arrays form. The arrays every step walks
-// (position, velocity, life: 4-byte floats; type: a 2-byte index; a resting mark: 1 byte; 23 bytes a
-// particle) are apart from
-// the rarely used (the Box2D body of body-backed particles, only allocated when a type is body-backed).
+// (position, velocity, life and clearance to the static geometry: 4-byte floats; type: a 2-byte index;
+// 26 bytes a particle) are apart from the rarely used (the Box2D body of body-backed particles, only
+// allocated when a type is body-backed).
 // Colour and size are not stored: they are functions of life and type (LookAt). Live particles are kept
 // in spawn order in a ring: a new particle goes after the newest, and when the pool is full the budget's
 // policy picks the one that makes room: the oldest (O(1): the ring turns by one) or the one with the

@@ -18,18 +18,6 @@ constexpr float kCellPerExtent = 1.0f;
 
 } // namespace
 
-int Grid::Column(float x) const
-{
-    const float cell = (x - m_lower.x) * m_inverseCell;
-    return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_columns - 1);
-}
-
-int Grid::Row(float y) const
-{
-    const float cell = (y - m_lower.y) * m_inverseCell;
-    return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_rows - 1);
-}
-
 void Grid::Build(std::span<const b2AABB> boxes)
 {
     m_items.clear();

@@ -11,6 +11,7 @@
 // from any number of threads at once.
 #pragma once
 
+#include <algorithm>
 #include <box2d/b2_collision.h>
 #include <cstdint>
 #include <span>
@@ -52,6 +53,16 @@ public:
         }
     }
 
+    /// The box every item lies in; an empty box (lower above upper, overlapping nothing) when there are
+    /// no items.
+    b2AABB Bounds() const
+    {
+        b2AABB bounds;
+        bounds.lowerBound = m_items.empty() ? b2Vec2(b2_maxFloat, b2_maxFloat) : m_lower;
+        bounds.upperBound = m_items.empty() ? b2Vec2(-b2_maxFloat, -b2_maxFloat) : m_upper;
+        return bounds;
+    }
+
     bool Empty() const { return m_items.empty(); }
     float CellSize() const { return m_cellSize; }
     int Columns() const { return m_columns; }
@@ -60,8 +71,16 @@ public:
     std::size_t Bytes() const;
 
 private:
-    int Column(float x) const;
-    int Row(float y) const;
+    int Column(float x) const
+    {
+        const float cell = (x - m_lower.x) * m_inverseCell;
+        return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_columns - 1);
+    }
+    int Row(float y) const
+    {
+        const float cell = (y - m_lower.y) * m_inverseCell;
+        return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_rows - 1);
+    }
 
     b2Vec2 m_lower{0.0f, 0.0f};
     b2Vec2 m_upper{0.0f, 0.0f};

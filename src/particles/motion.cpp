@@ -3,12 +3,24 @@
 // A pool particle's step: gravity and drag change its velocity; then up to two sweeps against the static
 // geometry (the second continues with what is left of the step after a bounce, so particles slide
 // instead of stopping at every touch of the ground); then one sweep against moving bodies in their own
-// frames from where the particle was at the start of the step to where it is now. Most particles are far
-// from all geometry, and the grids send those back after one box test.
+// frames from where the particle was at the start of the step to where it is now.
+//
+// Most particles are far from all geometry most of the time, and most of the rest are resting on it.
+// Each particle carries its clearance: how far its centre can move before its disc can touch a static
+// primitive (a lower bound, from the last time it was near geometry). A step that moves it less than
+// that is a free flight, exactly what the sweep would have given, and costs a subtraction; so a particle
+// in the air pays for a grid query only every so often instead of every step. The loop runs in blocks:
+// pass 1 flies every particle of the block and lists those whose flight used up their clearance (or
+// that are resting, or whose path meets a moving body's bounds); pass 2 sweeps the listed ones through
+// the geometry and measures their new clearance. Whether a particle is listed is as good as random from
+// one particle to the next, so pass 1 lists without a branch; the block keeps both passes in cache.
 #include "particles/motion.h"
 
+#include <array>
+#include <bit>
 #include <box2d/b2_body.h>
 #include <cmath>
+#include <limits>
 
 namespace cfx::particles
 {
@@ -17,6 +29,36 @@ namespace
 {
 
 constexpr int kStaticSweeps = 2;
+
+// Particles per block: pass 2's list lives on the stack.
+constexpr std::uint32_t kBlock = 64;
+
+// Special clearances. A resting particle's: (position, zero velocity) is a fixed point of the static
+// sweep; it stays below zero however far it moves, so pass 1 lists it. Nothing to touch: the particle
+// does not sweep (it does not collide, or is body-backed), or there is no static geometry. Unknown (just
+// spawned, or touching something): zero. Clearances hold only while the static geometry stays the same;
+// when it changes (or particles moved without collision), pass 1 lists every particle that sweeps.
+constexpr float kResting = -std::numeric_limits<float>::infinity();
+constexpr float kNothingToTouch = std::numeric_limits<float>::infinity();
+
+// How far ahead the clearance of a particle near geometry is measured, in steps of its current motion,
+// and at least and at most (m): far enough to skip several steps, near enough to keep the query small.
+constexpr float kReachSteps = 4.0f;
+constexpr float kMinReach = 0.05f;
+
+bool SameBits(b2Vec2 a, b2Vec2 b)
+{
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// At least |d| and at most 1.083 |d|, without a square root: the larger component plus tan(pi / 8)
+// times the smaller (a regular octagon around the circle).
+float StepLengthBound(b2Vec2 d)
+{
+    const float x = std::abs(d.x);
+    const float y = std::abs(d.y);
+    return std::max(x, y) + 0.41422f * std::min(x, y);
+}
 
 SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b2Vec2 surfaceVelocity)
 {
@@ -28,21 +70,30 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     return response;
 }
 
-// Returns whether (position, velocity) came out of the static sweep unchanged from zero velocity.
-bool Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting, b2Vec2& position,
-             b2Vec2& velocity)
+struct CollideResult
+{
+    bool fixedPoint; ///< (position, zero velocity) is a fixed point of the static sweep
+    bool touched;    ///< met a static or moving shape this step
+};
+
+// Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `resting`:
+// trust the resting mark and skip the static sweep. Sets `clearance` (see PoolArrays).
+CollideResult Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting,
+                      b2Vec2& position, b2Vec2& velocity, float& clearance)
 {
     const b2Vec2 start = position;
-    bool fixedPoint = false;
+    // The velocity every particle at rest enters the step with: then the next step repeats this one.
+    const bool fromRest = SameBits(velocity, type.restVelocity);
+    CollideResult result{false, false};
+    clearance = 0.0f;
+    const float reach = std::max(kMinReach, kReachSteps * StepLengthBound(dt * velocity));
     if (resting)
     {
         velocity.SetZero();
-        fixedPoint = true;
+        result = CollideResult{true, true};
     }
     else if (geometry.HasStatic())
     {
-        const bool fromRest =
-            velocity == b2Vec2(type.gravityDelta.x * type.damping, type.gravityDelta.y * type.damping);
         float remaining = dt;
         for (int sweep = 0; sweep < kStaticSweeps; ++sweep)
         {
@@ -52,21 +103,25 @@ bool Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool
                 break; // stopped by the first touch: nothing left to sweep
             }
             SweepResult hit;
-            if (!geometry.SweepStatic(in, type.side, hit))
+            // The first sweep also measures the clearance, should the particle fly freely.
+            if (!geometry.SweepStatic(in, type.side, hit, reach, sweep == 0 ? &clearance : nullptr))
             {
                 position += in.d;
                 break;
             }
+            result.touched = true;
             position = hit.touch.position;
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             remaining *= 1.0f - hit.touch.t;
         }
-        fixedPoint = fromRest && position == start && velocity.x == 0.0f && velocity.y == 0.0f;
+        // Bit for bit, so that skipping the sweep of a resting particle gives exactly what it would have.
+        result.fixedPoint = fromRest && SameBits(position, start) && SameBits(velocity, b2Vec2(0.0f, 0.0f));
     }
     else
     {
         position += dt * velocity;
+        clearance = kNothingToTouch; // until some static geometry is built
     }
     if (geometry.HasMoving())
     {
@@ -76,28 +131,79 @@ bool Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool
             position = hit.touch.position;
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
-            fixedPoint = false;
+            result = CollideResult{false, true};
         }
     }
-    return fixedPoint;
+    return result;
 }
 
-} // namespace
-
-std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
-                           float dt, bool trustResting, std::uint32_t begin, std::uint32_t end,
-                           std::vector<b2Body*>& dead)
+// The particles pass 1 lists, as arrays: filled one entry per particle without a branch, and a struct
+// entry would be assembled on the stack and copied (a stalled store-to-load forward every particle).
+struct Listed
 {
-    std::uint32_t read = pool.Slot(begin);
-    std::uint32_t write = read;
-    std::uint32_t kept = 0;
-    for (std::uint32_t i = begin; i < end; ++i)
+    std::array<std::uint32_t, kBlock> slot;
+    std::array<float, kBlock> startX, startY; ///< where it was at the start of the step
+};
+
+// Pass 2: sweeps the listed particles through the geometry, in place, and measures their clearance.
+// Pass 1 left in each slot the particle's velocity after gravity and drag and what remains of its
+// clearance (kResting when it rests).
+void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeometry& geometry, float dt,
+                 const StepTrust& trust, const Listed& listed, std::uint32_t count)
+{
+    for (std::uint32_t k = 0; k < count; ++k)
+    {
+        const std::uint32_t slot = listed.slot[k];
+        const TypeStep& type = types[pool.type[slot]];
+        if (!type.sweeps)
+        {
+            // Listed only because its clearance was unknown (just spawned): it never meets anything,
+            // and pass 1 moved it.
+            pool.clearance[slot] = kNothingToTouch;
+            continue;
+        }
+        const bool resting = trust.resting && pool.clearance[slot] == kResting;
+        b2Vec2 position(listed.startX[k], listed.startY[k]);
+        b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
+        float clearance = 0.0f;
+        const CollideResult result = Collide(type, geometry, dt, resting, position, velocity, clearance);
+        if (result.fixedPoint)
+        {
+            clearance = kResting;
+        }
+        else if (result.touched)
+        {
+            clearance = 0.0f;
+        }
+        pool.positionX[slot] = position.x;
+        pool.positionY[slot] = position.y;
+        pool.velocityX[slot] = velocity.x;
+        pool.velocityY[slot] = velocity.y;
+        pool.clearance[slot] = clearance;
+    }
+}
+
+// Pass 1 over `count` particles from `read` (one block): age, gravity and drag, and a free flight for
+// all; those whose flight may have met geometry are listed for pass 2, which redoes their motion from
+// `start`. The dead are squeezed out as the loop goes (the living are written from `write` on).
+// `kCollide`: geometry is given; `kMoving`: it has moving shapes; `kDistrust`: the clearances do not hold.
+template <bool kCollide, bool kMoving, bool kDistrust>
+std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, const b2AABB& movingBounds,
+                       std::uint32_t& read, std::uint32_t& write, std::uint32_t count, Listed& listed,
+                       std::uint32_t& listedCount, std::vector<b2Body*>& deadBodies)
+{
+    // The dead are counted rather than the living: a counter touched every particle ends up in memory
+    // when registers run short, and its load-add-store then paces the whole loop.
+    std::uint32_t dead = 0;
+    std::uint32_t n = 0;
+    for (std::uint32_t i = 0; i < count; ++i)
     {
         const TypeStep& type = types[pool.type[read]];
         const float life = pool.life[read] - type.lifeLoss;
-        b2Vec2 position(pool.positionX[read], pool.positionY[read]);
+        const b2Vec2 start(pool.positionX[read], pool.positionY[read]);
+        b2Vec2 position = start;
         b2Vec2 velocity(pool.velocityX[read], pool.velocityY[read]);
-        std::uint8_t resting = 0;
+        float clearance = kNothingToTouch;
         if (type.bodyBacked)
         {
             const b2Body* body = pool.body[read];
@@ -108,16 +214,22 @@ std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const 
         {
             velocity.x = (velocity.x + type.gravityDelta.x) * type.damping;
             velocity.y = (velocity.y + type.gravityDelta.y) * type.damping;
-            if (geometry != nullptr && type.collide)
+            const b2Vec2 d(dt * velocity.x, dt * velocity.y);
+            position.x += d.x;
+            position.y += d.y;
+            if constexpr (kCollide)
             {
-                resting =
-                    Collide(type, *geometry, dt, trustResting && pool.resting[read] != 0, position, velocity)
-                        ? 1
-                        : 0;
+                clearance = pool.clearance[read] - StepLengthBound(d);
             }
-            else
+        }
+        bool isNear = false;
+        if constexpr (kCollide)
+        {
+            isNear = kDistrust ? type.sweeps : clearance < 0.0f;
+            if constexpr (kMoving)
             {
-                position += dt * velocity;
+                isNear = isNear | (type.sweeps &
+                                   BoxesOverlap(PathBox(start, position, type.side.radius), movingBounds));
             }
         }
         if (life > 0.0f)
@@ -128,21 +240,81 @@ std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const 
             pool.velocityY[write] = velocity.y;
             pool.life[write] = life;
             pool.type[write] = pool.type[read];
-            pool.resting[write] = resting;
             if (pool.body != nullptr)
             {
                 pool.body[write] = pool.body[read];
             }
+            if constexpr (kCollide)
+            {
+                // Without collision the clearances go stale (and even out of step with their particles
+                // as the dead are squeezed out); the next step distrusts them all.
+                pool.clearance[write] = clearance;
+                listed.slot[n] = write;
+                listed.startX[n] = start.x;
+                listed.startY[n] = start.y;
+                n += isNear ? 1 : 0;
+            }
             write = write + 1 == pool.capacity ? 0 : write + 1;
-            ++kept;
         }
-        else if (type.bodyBacked)
+        else
         {
-            dead.push_back(pool.body[read]);
+            ++dead;
+            if (type.bodyBacked)
+            {
+                deadBodies.push_back(pool.body[read]);
+            }
         }
         read = read + 1 == pool.capacity ? 0 : read + 1;
     }
+    listedCount = n;
+    return count - dead;
+}
+
+template <bool kCollide, bool kMoving, bool kDistrust>
+std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const WorldGeometry* geometry,
+                      float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
+                      std::vector<b2Body*>& dead)
+{
+    // A local copy: the stores below cannot alias it, so its pointers stay in registers.
+    const PoolArrays pool = arrays;
+    const b2AABB movingBounds = kMoving ? geometry->MovingBounds() : b2AABB{};
+    Listed listed;
+    std::uint32_t read = pool.Slot(begin);
+    std::uint32_t write = read;
+    std::uint32_t kept = 0;
+    for (std::uint32_t first = begin; first < end; first += kBlock)
+    {
+        const std::uint32_t count = std::min(kBlock, end - first);
+        std::uint32_t listedCount = 0;
+        kept += FlyBlock<kCollide, kMoving, kDistrust>(pool, types, dt, movingBounds, read, write, count,
+                                                       listed, listedCount, dead);
+        if constexpr (kCollide)
+        {
+            SweepListed(pool, types, *geometry, dt, trust, listed, listedCount);
+        }
+    }
     return kept;
+}
+
+} // namespace
+
+std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
+                           float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
+                           std::vector<b2Body*>& dead)
+{
+    if (geometry == nullptr)
+    {
+        return Advance<false, false, false>(pool, types, nullptr, dt, trust, begin, end, dead);
+    }
+    if (!trust.clearance)
+    {
+        return Advance<true, false, true>(pool, types, geometry, dt, trust, begin, end, dead);
+    }
+    if (geometry->HasMoving())
+    {
+        return Advance<true, true, false>(pool, types, geometry, dt, trust, begin, end, dead);
+    }
+    return Advance<true, false, false>(pool, types, geometry, dt, trust, begin, end, dead);
 }
 
 void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count)
@@ -157,7 +329,7 @@ void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to,
         pool.velocityY[write] = pool.velocityY[read];
         pool.life[write] = pool.life[read];
         pool.type[write] = pool.type[read];
-        pool.resting[write] = pool.resting[read];
+        pool.clearance[write] = pool.clearance[read];
         if (pool.body != nullptr)
         {
             pool.body[write] = pool.body[read];

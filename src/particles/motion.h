@@ -26,8 +26,11 @@ struct PoolArrays
     float* velocityY;
     float* life;
     std::uint16_t* type;
-    std::uint8_t* resting; ///< 1: (position, zero velocity) is a fixed point of the static sweep
-    b2Body** body;         ///< null when no type is body-backed
+    /// How far (m) the particle's centre can move before its disc can touch a static shape (a lower
+    /// bound; 0 when unknown, +infinity when it never touches one). -infinity: resting, (position, zero
+    /// velocity) is a fixed point of the static sweep.
+    float* clearance;
+    b2Body** body; ///< null when no type is body-backed
     std::uint32_t capacity;
     std::uint32_t head;
 
@@ -43,20 +46,31 @@ struct TypeStep
 {
     b2Vec2 gravityDelta; ///< velocity added by gravity this step (m/s)
     float damping;       ///< velocity factor of drag, 1 / (1 + dt * drag)
+    b2Vec2 restVelocity; ///< what gravity and drag make of a zero velocity: (0 + gravityDelta) * damping
     float lifeLoss;      ///< life lost this step
     ParticleSide side;
-    bool collide;
     bool bodyBacked;
+    bool sweeps; ///< a pool particle that collides: moved through the geometry here
+};
+
+/// What the marks a step left still say in this step.
+struct StepTrust
+{
+    /// dt, gravity and the static geometry are the same as in the previous step, so a particle marked
+    /// resting would come out of the static sweep exactly as it went in, and the sweep is skipped (the
+    /// result is the same bits either way).
+    bool resting = false;
+    /// The static geometry is the same as in the previous step, so the clearances hold.
+    bool clearance = false;
 };
 
 /// Advances logical indices [begin, end) by `dt` seconds; pool particles collide with `geometry` when
-/// it is not null. `trustResting`: dt, gravity and the static geometry are the same as in the previous
-/// step, so a particle marked resting would come out of the static sweep exactly as it went in, and the
-/// sweep is skipped (the result is the same bits either way). Returns how many live; they are now at [begin,
-/// begin + kept) in order. Bodies of body-backed particles that died are appended to `dead` (which must have
-/// room: no allocation) for the caller to destroy on its thread.
+/// it is not null. A particle whose clearance covers its motion flies freely, which is the same bits as
+/// sweeping it. Returns how many live; they are now at [begin, begin + kept) in order. Bodies of
+/// body-backed particles that died are appended to `dead` (which must have room: no allocation) for the
+/// caller to destroy on its thread.
 std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
-                           float dt, bool trustResting, std::uint32_t begin, std::uint32_t end,
+                           float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
                            std::vector<b2Body*>& dead);
 
 /// Moves `count` particles from logical index `from` to `to` (to < from), keeping their order.

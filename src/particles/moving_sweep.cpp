@@ -49,9 +49,7 @@ bool SweepShape(const SweepInput& in, const b2Shape& shape, int child, Touch& to
 bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const
 {
     const float r = side.radius;
-    b2AABB query;
-    query.lowerBound = b2Min(start, end) - b2Vec2(r, r);
-    query.upperBound = b2Max(start, end) + b2Vec2(r, r);
+    const b2AABB query = PathBox(start, end, r);
     bool found = false;
     m_movingGrid.Query(
         query,

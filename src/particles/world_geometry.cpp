@@ -67,15 +67,11 @@ void AddStaticBody(Signature& signature, const b2Body& body)
     }
 }
 
-b2AABB BoxOf(b2Vec2 a, b2Vec2 b)
-{
-    b2AABB box;
-    box.lowerBound = b2Min(a, b);
-    box.upperBound = b2Max(a, b);
-    return box;
-}
-
 constexpr std::uint32_t kRecent = 8;
+
+// Taken off every clearance (m), so that rounding in the distances can never let a particle that flies
+// freely on its clearance end up touching a shape that a sweep would have met.
+constexpr float kClearanceSlop = 1.0e-3f;
 
 SurfaceMaterial MaterialOf(const b2Fixture& fixture)
 {
@@ -185,9 +181,8 @@ void WorldGeometry::BuildStatic(b2World& world)
                 primitive.kind = Kind::circle;
                 primitive.a = b2Mul(xf, circle->m_p);
                 primitive.scalar = circle->m_radius;
-                const b2Vec2 extent(circle->m_radius, circle->m_radius);
                 m_primitives.push_back(primitive);
-                m_primitiveBoxes.push_back(BoxOf(primitive.a - extent, primitive.a + extent));
+                m_primitiveBoxes.push_back(PathBox(primitive.a, primitive.a, circle->m_radius));
                 break;
             }
             case b2Shape::e_polygon:
@@ -196,7 +191,8 @@ void WorldGeometry::BuildStatic(b2World& world)
                 primitive.kind = Kind::polygon;
                 primitive.first = static_cast<std::uint32_t>(m_polygonVertices.size());
                 primitive.count = static_cast<std::uint8_t>(polygon->m_count);
-                b2AABB box = BoxOf(b2Mul(xf, polygon->m_vertices[0]), b2Mul(xf, polygon->m_vertices[0]));
+                b2AABB box =
+                    PathBox(b2Mul(xf, polygon->m_vertices[0]), b2Mul(xf, polygon->m_vertices[0]), 0.0f);
                 for (int i = 0; i < polygon->m_count; ++i)
                 {
                     const b2Vec2 vertex = b2Mul(xf, polygon->m_vertices[i]);
@@ -238,7 +234,7 @@ void WorldGeometry::BuildStatic(b2World& world)
                     primitive.scalar = segment.invLengthSq;
                     primitive.oneSided = segment.oneSided;
                     m_primitives.push_back(primitive);
-                    m_primitiveBoxes.push_back(BoxOf(v1, v2));
+                    m_primitiveBoxes.push_back(PathBox(v1, v2, 0.0f));
                 }
                 break;
             }
@@ -250,12 +246,68 @@ void WorldGeometry::BuildStatic(b2World& world)
     m_staticGrid.Build(m_primitiveBoxes);
 }
 
-bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result) const
+// The distances from one point to the static primitives near it: the clearance's part of a sweep.
+class WorldGeometry::Nearest
 {
+public:
+    Nearest(b2Vec2 point, float limit) : m_point(point), m_segmentSq(limit * limit), m_other(limit) {}
+
+    void Add(const WorldGeometry& geometry, const Primitive& primitive)
+    {
+        switch (primitive.kind)
+        {
+        case Kind::segment:
+        {
+            const b2Vec2 e = primitive.b - primitive.a;
+            const float u = std::clamp(b2Dot(m_point - primitive.a, e) * primitive.scalar, 0.0f, 1.0f);
+            m_segmentSq = std::min(m_segmentSq, b2DistanceSquared(m_point, primitive.a + u * e));
+            break;
+        }
+        case Kind::circle:
+            m_other = std::min(m_other, b2Distance(m_point, primitive.a) - primitive.scalar);
+            break;
+        case Kind::polygon:
+        {
+            // The polygon lies behind each edge's line: its distance is at least the largest separation.
+            const b2Vec2* vertices = geometry.m_polygonVertices.data() + primitive.first;
+            const b2Vec2* normals = geometry.m_polygonNormals.data() + primitive.first;
+            float separation = -b2_maxFloat;
+            for (int i = 0; i < primitive.count; ++i)
+            {
+                separation = std::max(separation, b2Dot(normals[i], m_point - vertices[i]));
+            }
+            m_other = std::min(m_other, separation);
+            break;
+        }
+        }
+    }
+
+    /// The least distance seen, capped at the limit.
+    float Distance() const { return std::min(m_other, std::sqrt(m_segmentSq)); }
+
+private:
+    b2Vec2 m_point;
+    float m_segmentSq; ///< squared distance to the nearest segment: one square root at the end
+    float m_other;     ///< distance to the nearest circle or polygon
+};
+
+bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
+                                float reach, float* clearance) const
+{
+    const b2Vec2 end = in.p + in.d;
     const float r = in.radius;
-    b2AABB query = BoxOf(in.p, in.p + in.d);
-    query.lowerBound -= b2Vec2(r, r);
-    query.upperBound += b2Vec2(r, r);
+    b2AABB query = PathBox(in.p, end, r);
+    // Every primitive lies in the grid's bounds, so it is at least as far from `end` as the bounds are.
+    const b2AABB bounds = m_staticGrid.Bounds();
+    const float outside = std::max(std::max(bounds.lowerBound.x - end.x, end.x - bounds.upperBound.x),
+                                   std::max(bounds.lowerBound.y - end.y, end.y - bounds.upperBound.y));
+    const bool measure = clearance != nullptr && outside - r < reach;
+    if (measure)
+    {
+        // A primitive whose box misses this box is more than r + reach from `end` in one axis.
+        query.Combine(PathBox(end, end, r + reach));
+    }
+    Nearest nearest(end, r + reach);
     bool found = false;
     // A primitive spanning several of the query's cells is listed in each: test it once. The few most
     // recent ones suffice, since a cell's neighbour lists mostly the same primitives.
@@ -278,6 +330,10 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
                 (primitive.categoryBits & side.maskBits) == 0)
             {
                 return;
+            }
+            if (measure)
+            {
+                nearest.Add(*this, primitive);
             }
             bool hit = false;
             switch (primitive.kind)
@@ -311,6 +367,11 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
                 found = true;
             }
         });
+    if (clearance != nullptr)
+    {
+        const float distance = measure ? std::max(outside, nearest.Distance()) : outside;
+        *clearance = found ? 0.0f : std::max(0.0f, distance - r - kClearanceSlop);
+    }
     return found;
 }
 

@@ -68,6 +68,24 @@ struct SweepResult
     const SurfaceMaterial* material = nullptr; ///< valid until the next Scan
 };
 
+/// The box a disc of radius `radius` covers moving from `start` to `end`.
+inline b2AABB PathBox(b2Vec2 start, b2Vec2 end, float radius)
+{
+    const b2Vec2 grow(radius, radius);
+    b2AABB box;
+    box.lowerBound = b2Min(start, end) - grow;
+    box.upperBound = b2Max(start, end) + grow;
+    return box;
+}
+
+/// Whether two boxes overlap, with non-short-circuit ands: no branch of its own, for loops where the
+/// answer is as good as random from one call to the next.
+inline bool BoxesOverlap(const b2AABB& a, const b2AABB& b)
+{
+    return (a.upperBound.x >= b.lowerBound.x) & (a.upperBound.y >= b.lowerBound.y) &
+           (a.lowerBound.x <= b.upperBound.x) & (a.lowerBound.y <= b.upperBound.y);
+}
+
 class WorldGeometry
 {
 public:
@@ -80,10 +98,21 @@ public:
 
     /// Earliest touch of the disc moving from in.p by in.d with static fixtures the particle's filter
     /// accepts; updates `result` (world space) and returns whether it found one earlier than result's.
-    bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result) const;
+    ///
+    /// With `clearance`, also measures it at the end of the motion when nothing is touched: a lower
+    /// bound (m, >= 0) on how far the disc's centre can then move in any direction before the disc can
+    /// touch a static fixture the filter accepts. It looks at most `reach` (m, > 0) around the disc, so
+    /// the answer is at least `reach` when nothing is nearer (and can be much more outside the static
+    /// geometry's bounds). 0 when something was touched.
+    bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result, float reach = 0.0f,
+                     float* clearance = nullptr) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
     /// is at `end` (both world, end of step frame for `end`).
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const;
+
+    /// A box holding all moving geometry (an empty box when there is none): a disc whose path box
+    /// misses it meets no moving shape, and SweepMoving would find nothing.
+    b2AABB MovingBounds() const { return m_movingGrid.Bounds(); }
 
     bool HasStatic() const { return !m_staticGrid.Empty(); }
     bool HasMoving() const { return !m_movingShapes.empty(); }
@@ -135,6 +164,7 @@ private:
     };
 
     void BuildStatic(b2World& world);
+    class Nearest;
 
     std::uint64_t m_signature = 0;
     std::uint64_t m_builds = 0;

@@ -295,6 +295,108 @@ TEST(ParticlePool, ResultsAreIdenticalWithOneOrTwoThreads)
     }
 }
 
+// Particles flying on their clearance and particles trusted to rest skip the sweep; a rebuilt static cache
+// (forced every step here) trusts nothing and sweeps every particle every step. The bits must not differ.
+TEST(ParticlePool, SkippedSweepsGiveTheSameBitsAsSweepingEveryStep)
+{
+    auto run = [](bool sweepEveryStep, bool movingBody)
+    {
+        auto scene = std::make_unique<Pool>(std::vector<ParticleTypeDef>{Ball(0.5f, 0.3f), Ball(0.2f, 0.9f)},
+                                            ParticleBudget{800, RecyclePolicy::oldest});
+        StaticChain(*scene->world, 20.0f, 0.7f, 0.0f);
+        scene->CreateBox(b2Vec2(-3.0f, 1.5f), 1.0f, 0.3f, 0.5f, b2_staticBody);
+        scene->CreateCircle(b2Vec2(4.0f, 1.5f), 0.6f, 0.5f, b2_staticBody);
+        if (movingBody)
+        {
+            b2Body* spinner = scene->CreateBox(b2Vec2(0.0f, 4.0f), 1.0f, 0.2f, 0.5f, b2_kinematicBody);
+            spinner->SetAngularVelocity(1.5f);
+        }
+        std::uint32_t seed = 7;
+        auto next = [&]()
+        {
+            seed = seed * 1664525u + 1013904223u;
+            return static_cast<float>(seed >> 8) / 16777216.0f;
+        };
+        std::uint32_t resting = 0;
+        for (int step = 0; step < 240; ++step)
+        {
+            for (int k = 0; step < 60 && k < 10; ++k)
+            {
+                scene->Add(b2Vec2(-8.0f + 16.0f * next(), 1.0f + 8.0f * next()),
+                           b2Vec2(-4.0f + 8.0f * next(), -4.0f + 8.0f * next()), 1.0f,
+                           static_cast<std::uint16_t>(k % 2));
+            }
+            if (sweepEveryStep)
+            {
+                scene->system->InvalidateStaticGeometry();
+            }
+            scene->StepAll();
+            resting = 0;
+            for (std::uint32_t i = 0; i < scene->system->Count(); ++i)
+            {
+                resting += scene->Velocity(i).x == 0.0f && scene->Velocity(i).y == 0.0f ? 1 : 0;
+            }
+        }
+        return std::make_pair(std::move(scene), resting);
+    };
+    for (const bool movingBody : {false, true})
+    {
+        SCOPED_TRACE(movingBody ? "with a moving body" : "static geometry only");
+        const auto [skipping, restingSkipping] = run(false, movingBody);
+        const auto [sweeping, restingSweeping] = run(true, movingBody);
+        EXPECT_EQ(sweeping->system->StaticGeometryBuilds(), 240u);
+        EXPECT_EQ(skipping->system->StaticGeometryBuilds(), 1u);
+        ASSERT_EQ(skipping->system->Count(), 600u);
+        ASSERT_EQ(sweeping->system->Count(), 600u);
+        EXPECT_GT(restingSkipping, 100u) << "many came to rest: the resting mark was used";
+        EXPECT_EQ(restingSkipping, restingSweeping);
+        for (std::uint32_t i = 0; i < skipping->system->Count(); ++i)
+        {
+            const b2Vec2 a = skipping->Position(i), b = sweeping->Position(i);
+            const b2Vec2 va = skipping->Velocity(i), vb = sweeping->Velocity(i);
+            ASSERT_EQ(std::memcmp(&a, &b, sizeof(a)), 0) << i;
+            ASSERT_EQ(std::memcmp(&va, &vb, sizeof(va)), 0) << i;
+        }
+    }
+}
+
+// Particles that moved without collision (Integrate) carry stale clearances, out of step with their slots
+// once the dead are squeezed out: the next colliding step must sweep them all, not trust a clearance
+// measured metres above the ground.
+TEST(ParticlePool, ClearancesAreNotTrustedAfterMovingWithoutCollision)
+{
+    ParticleTypeDef ghost = Ball();
+    ghost.name = "ghost";
+    ghost.collide = false;
+    ParticleTypeDef shortLived = ghost;
+    shortLived.name = "short";
+    shortLived.lifetime = 0.5f;
+    Pool scene({Ball(), ghost, shortLived});
+    scene.CreateGround();
+    scene.Add(b2Vec2(5.0f, 8.0f), {}, 1.0f, 2); // dies during Integrate
+    scene.Add(b2Vec2(0.0f, 4.0f), {}, 1.0f, 0); // falls from 4 m
+    scene.Add(b2Vec2(2.0f, 9.0f), {}, 1.0f, 1); // a ghost: never collides
+    for (int i = 0; i < 20; ++i)
+    {
+        scene.StepAll();
+    }
+    ASSERT_EQ(scene.system->Count(), 3u);
+    ASSERT_GT(scene.Position(1).y, 3.0f) << "still high above the ground";
+    for (int i = 0; i < 25; ++i)
+    {
+        scene.world->Step(kDt, 8, 3);
+        scene.system->Integrate(kDt, scene.world->GetGravity());
+    }
+    ASSERT_EQ(scene.system->Count(), 2u) << "the short-lived ghost died";
+    ASSERT_GT(scene.Position(0).y, 0.2f) << "the ball has not reached the ground yet";
+    for (int i = 0; i < 120; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 1e-3f) << "the ball lands on the ground";
+    EXPECT_LT(scene.Position(1).y, -5.0f) << "the ghost falls through it";
+}
+
 TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
 {
     ParticleTypeDef quick = Ball();
@@ -319,7 +421,7 @@ TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
 TEST(ParticlePool, ReportsItsMemory)
 {
     Pool scene({Ball()}, {1000, RecyclePolicy::oldest});
-    EXPECT_EQ(scene.system->BytesPerSlot(), 5 * sizeof(float) + sizeof(std::uint16_t) + sizeof(std::uint8_t));
+    EXPECT_EQ(scene.system->BytesPerSlot(), 6 * sizeof(float) + sizeof(std::uint16_t));
     EXPECT_GE(scene.system->MemoryBytes(), 1000 * scene.system->BytesPerSlot());
 }
 
