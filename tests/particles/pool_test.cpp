@@ -373,9 +373,9 @@ TEST(ParticlePool, ClearancesAreNotTrustedAfterMovingWithoutCollision)
     shortLived.lifetime = 0.5f;
     Pool scene({Ball(), ghost, shortLived});
     scene.CreateGround();
-    scene.Add(b2Vec2(5.0f, 8.0f), {}, 1.0f, 2); // dies during Integrate
-    scene.Add(b2Vec2(0.0f, 4.0f), {}, 1.0f, 0); // falls from 4 m
-    scene.Add(b2Vec2(2.0f, 9.0f), {}, 1.0f, 1); // a ghost: never collides
+    scene.Add(b2Vec2(5.0f, 8.0f), b2Vec2(0.0f, 0.0f), 1.0f, 2); // dies during Integrate
+    scene.Add(b2Vec2(0.0f, 4.0f), b2Vec2(0.0f, 0.0f), 1.0f, 0); // falls from 4 m
+    scene.Add(b2Vec2(2.0f, 9.0f), b2Vec2(0.0f, 0.0f), 1.0f, 1); // a ghost: never collides
     for (int i = 0; i < 20; ++i)
     {
         scene.StepAll();
@@ -404,15 +404,15 @@ TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
     ParticleTypeDef slow = Ball();
     slow.lifetime = 10.0f;
     Pool scene({quick, slow}, {4, RecyclePolicy::lowestLife});
-    scene.Add(b2Vec2(0.0f, 5.0f), {}, 0.9f, 0); // 0.9 s left
-    scene.Add(b2Vec2(1.0f, 5.0f), {}, 0.2f, 1); // 2 s left
-    scene.Add(b2Vec2(2.0f, 5.0f), {}, 0.5f, 0); // 0.5 s left
-    scene.Add(b2Vec2(3.0f, 5.0f), {}, 0.3f, 0); // 0.3 s left: the first to go
-    scene.Add(b2Vec2(9.0f, 5.0f), {}, 1.0f, 0);
+    scene.Add(b2Vec2(0.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.9f, 0); // 0.9 s left
+    scene.Add(b2Vec2(1.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.2f, 1); // 2 s left
+    scene.Add(b2Vec2(2.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.5f, 0); // 0.5 s left
+    scene.Add(b2Vec2(3.0f, 5.0f), b2Vec2(0.0f, 0.0f), 0.3f, 0); // 0.3 s left: the first to go
+    scene.Add(b2Vec2(9.0f, 5.0f), b2Vec2(0.0f, 0.0f), 1.0f, 0);
     ASSERT_EQ(scene.system->Count(), 4u);
     EXPECT_EQ(scene.system->Recycled(), 1u);
     EXPECT_EQ(scene.Position(3).x, 9.0f) << "took the place of the one with 0.3 s left";
-    scene.Add(b2Vec2(8.0f, 5.0f), {}, 1.0f, 0);
+    scene.Add(b2Vec2(8.0f, 5.0f), b2Vec2(0.0f, 0.0f), 1.0f, 0);
     EXPECT_EQ(scene.Position(2).x, 8.0f) << "then the one with 0.5 s left";
     EXPECT_EQ(scene.Position(0).x, 0.0f);
     EXPECT_EQ(scene.Position(1).x, 1.0f);
