@@ -252,7 +252,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.velocityY[slot] = spawn.velocity.y;
     impl.life[slot] = std::min(spawn.life, 1.0f);
     impl.type[slot] = spawn.type.index;
-    impl.clearance[slot] = 0.0f;
+    impl.clearance[slot] = particles::kUnknownClearance;
     if (impl.anyBodyBacked)
     {
         impl.body[slot] =

@@ -33,11 +33,11 @@ constexpr int kStaticSweeps = 2;
 // Particles per block: pass 2's list lives on the stack.
 constexpr std::uint32_t kBlock = 64;
 
-// Special clearances. A resting particle's: (position, zero velocity) is a fixed point of the static
-// sweep; it stays below zero however far it moves, so pass 1 lists it. Nothing to touch: the particle
-// does not sweep (it does not collide, or is body-backed), or there is no static geometry. Unknown (just
-// spawned, or touching something): zero. Clearances hold only while the static geometry stays the same;
-// when it changes (or particles moved without collision), pass 1 lists every particle that sweeps.
+// Special clearances (see PoolArrays). A resting particle's: (position, zero velocity) is a fixed point of
+// the static sweep; it stays below zero however far it moves, so pass 1 lists it. Nothing to touch: the
+// particle does not sweep (it does not collide, or is body-backed), or there is no static geometry.
+// Clearances hold only while the static geometry stays the same; when it changes (or particles moved
+// without collision), pass 1 lists every particle that sweeps.
 constexpr float kResting = -std::numeric_limits<float>::infinity();
 constexpr float kNothingToTouch = std::numeric_limits<float>::infinity();
 
@@ -85,7 +85,7 @@ CollideResult Collide(const TypeStep& type, const WorldGeometry& geometry, float
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
     const bool fromRest = SameBits(velocity, type.restVelocity);
     CollideResult result{false, false};
-    clearance = 0.0f;
+    clearance = kUnknownClearance;
     const float reach = std::max(kMinReach, kReachSteps * StepLengthBound(dt * velocity));
     if (resting)
     {
@@ -173,7 +173,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         }
         else if (result.touched)
         {
-            clearance = 0.0f;
+            clearance = kUnknownClearance;
         }
         pool.positionX[slot] = position.x;
         pool.positionY[slot] = position.y;

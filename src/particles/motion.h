@@ -10,12 +10,17 @@
 #include "particles/world_geometry.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 class b2Body;
 
 namespace cfx::particles
 {
+
+/// The clearance of a particle just spawned or that touched something: below zero, so that its next step
+/// sweeps it, even if it does not move (it may have been spawned overlapping a shape).
+inline constexpr float kUnknownClearance = -std::numeric_limits<float>::min();
 
 /// The ring of particle arrays. Slot of logical index i: (head + i) mod capacity.
 struct PoolArrays
@@ -27,8 +32,9 @@ struct PoolArrays
     float* life;
     std::uint16_t* type;
     /// How far (m) the particle's centre can move before its disc can touch a static shape (a lower
-    /// bound; 0 when unknown, +infinity when it never touches one). -infinity: resting, (position, zero
-    /// velocity) is a fixed point of the static sweep.
+    /// bound; +infinity when it never touches one). Negative: the particle is swept in the next step;
+    /// kUnknownClearance when nothing is known (it even lists a particle that does not move), -infinity
+    /// when resting: (position, zero velocity) is a fixed point of the static sweep.
     float* clearance;
     b2Body** body; ///< null when no type is body-backed
     std::uint32_t capacity;

@@ -397,6 +397,20 @@ TEST(ParticlePool, ClearancesAreNotTrustedAfterMovingWithoutCollision)
     EXPECT_LT(scene.Position(1).y, -5.0f) << "the ghost falls through it";
 }
 
+// A particle that does not move still gets its first sweep: one spawned overlapping a shape is pushed out.
+TEST(ParticlePool, AParticleSpawnedInsideAShapeIsPushedOutEvenAtRest)
+{
+    Pool scene({Ball()}, {64, RecyclePolicy::oldest}, {}, b2Vec2(0.0f, 0.0f));
+    scene.CreateBox(b2Vec2(0.0f, 0.0f), 1.0f, 1.0f, 0.5f, b2_staticBody);
+    scene.Add(b2Vec2(20.0f, 20.0f), b2Vec2(0.0f, 0.0f)); // far away, so that the steps trust clearances
+    scene.StepAll();
+    scene.StepAll();
+    scene.Add(b2Vec2(0.3f, 0.97f), b2Vec2(0.0f, 0.0f)); // its disc reaches 2 cm into the box's top
+    scene.StepAll();
+    EXPECT_NEAR(scene.Position(1).y, 1.05f, 1e-4f) << "resting on the top face";
+    EXPECT_EQ(scene.Position(1).x, 0.3f);
+}
+
 TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
 {
     ParticleTypeDef quick = Ball();
