@@ -70,30 +70,26 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     return response;
 }
 
-struct CollideResult
-{
-    bool fixedPoint; ///< (position, zero velocity) is a fixed point of the static sweep
-    bool touched;    ///< met a static or moving shape this step
-};
-
 // Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `resting`:
-// trust the resting mark and skip the static sweep. Sets `clearance` (see PoolArrays).
-CollideResult Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting,
-                      b2Vec2& position, b2Vec2& velocity, float& clearance)
+// trust the resting mark and skip the static sweep. Returns its clearance after the step (see
+// PoolArrays): kResting at a fixed point of the static sweep, kUnknownClearance after a touch.
+float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting, b2Vec2& position,
+              b2Vec2& velocity)
 {
     const b2Vec2 start = position;
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
     const bool fromRest = SameBits(velocity, type.restVelocity);
-    CollideResult result{false, false};
-    clearance = kUnknownClearance;
-    const float reach = std::max(kMinReach, kReachSteps * StepLengthBound(dt * velocity));
+    float clearance = kUnknownClearance;
+    bool fixedPoint = false;
+    bool touched = false;
     if (resting)
     {
         velocity.SetZero();
-        result = CollideResult{true, true};
+        fixedPoint = true;
     }
     else if (geometry.HasStatic())
     {
+        const float reach = std::max(kMinReach, kReachSteps * StepLengthBound(dt * velocity));
         float remaining = dt;
         for (int sweep = 0; sweep < kStaticSweeps; ++sweep)
         {
@@ -109,14 +105,14 @@ CollideResult Collide(const TypeStep& type, const WorldGeometry& geometry, float
                 position += in.d;
                 break;
             }
-            result.touched = true;
+            touched = true;
             position = hit.touch.position;
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             remaining *= 1.0f - hit.touch.t;
         }
         // Bit for bit, so that skipping the sweep of a resting particle gives exactly what it would have.
-        result.fixedPoint = fromRest && SameBits(position, start) && SameBits(velocity, b2Vec2(0.0f, 0.0f));
+        fixedPoint = fromRest && SameBits(position, start) && SameBits(velocity, b2Vec2(0.0f, 0.0f));
     }
     else
     {
@@ -131,10 +127,11 @@ CollideResult Collide(const TypeStep& type, const WorldGeometry& geometry, float
             position = hit.touch.position;
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
-            result = CollideResult{false, true};
+            fixedPoint = false;
+            touched = true;
         }
     }
-    return result;
+    return fixedPoint ? kResting : touched ? kUnknownClearance : clearance;
 }
 
 // The particles pass 1 lists, as arrays: filled one entry per particle without a branch, and a struct
@@ -165,16 +162,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         const bool resting = trust.resting && pool.clearance[slot] == kResting;
         b2Vec2 position(listed.startX[k], listed.startY[k]);
         b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
-        float clearance = 0.0f;
-        const CollideResult result = Collide(type, geometry, dt, resting, position, velocity, clearance);
-        if (result.fixedPoint)
-        {
-            clearance = kResting;
-        }
-        else if (result.touched)
-        {
-            clearance = kUnknownClearance;
-        }
+        const float clearance = Collide(type, geometry, dt, resting, position, velocity);
         pool.positionX[slot] = position.x;
         pool.positionY[slot] = position.y;
         pool.velocityX[slot] = velocity.x;

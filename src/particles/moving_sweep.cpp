@@ -60,9 +60,7 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             {
                 return;
             }
-            const b2AABB& box = m_movingBoxes[index];
-            if (query.upperBound.x < box.lowerBound.x || query.upperBound.y < box.lowerBound.y ||
-                query.lowerBound.x > box.upperBound.x || query.lowerBound.y > box.upperBound.y)
+            if (!BoxesOverlap(query, m_movingBoxes[index]))
             {
                 return;
             }
