@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <box2d/b2_collision.h>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -28,13 +29,16 @@ public:
     void Build(std::span<const b2AABB> boxes);
 
     /// Calls visit(item) for the items listed in the cells `box` overlaps, cell by cell in row order;
-    /// an item overlapping several of those cells is visited once per cell.
-    template <typename Visit> void Query(const b2AABB& box, Visit&& visit) const
+    /// an item overlapping several of those cells is visited once per cell. Returns the box those
+    /// cells cover, its sides on the grid's edges pushed to infinity: no item that was not visited
+    /// overlaps it, so a point inside is at least its distance to the returned box's sides away from
+    /// every such item. It contains `box`.
+    template <typename Visit> b2AABB Query(const b2AABB& box, Visit&& visit) const
     {
         if (m_items.empty() || box.upperBound.x < m_lower.x || box.upperBound.y < m_lower.y ||
             box.lowerBound.x > m_upper.x || box.lowerBound.y > m_upper.y)
         {
-            return;
+            return box;
         }
         const int x0 = Column(box.lowerBound.x);
         const int x1 = Column(box.upperBound.x);
@@ -51,6 +55,14 @@ public:
                 }
             }
         }
+        constexpr float kEdge = std::numeric_limits<float>::infinity();
+        b2AABB covered;
+        covered.lowerBound.x = x0 == 0 ? -kEdge : m_lower.x + static_cast<float>(x0) * m_cellSize;
+        covered.lowerBound.y = y0 == 0 ? -kEdge : m_lower.y + static_cast<float>(y0) * m_cellSize;
+        covered.upperBound.x =
+            x1 == m_columns - 1 ? kEdge : m_lower.x + static_cast<float>(x1 + 1) * m_cellSize;
+        covered.upperBound.y = y1 == m_rows - 1 ? kEdge : m_lower.y + static_cast<float>(y1 + 1) * m_cellSize;
+        return covered;
     }
 
     /// The box every item lies in; an empty box (lower above upper, overlapping nothing) when there are

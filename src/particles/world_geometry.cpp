@@ -12,6 +12,7 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
+#include <limits>
 
 namespace cfx::particles
 {
@@ -250,7 +251,7 @@ void WorldGeometry::BuildStatic(b2World& world)
 class WorldGeometry::Nearest
 {
 public:
-    Nearest(b2Vec2 point, float limit) : m_point(point), m_segmentSq(limit * limit), m_other(limit) {}
+    explicit Nearest(b2Vec2 point) : m_point(point) {}
 
     void Add(const WorldGeometry& geometry, const Primitive& primitive)
     {
@@ -282,13 +283,14 @@ public:
         }
     }
 
-    /// The least distance seen, capped at the limit.
+    /// The least distance seen (infinity when none).
     float Distance() const { return std::min(m_other, std::sqrt(m_segmentSq)); }
 
 private:
     b2Vec2 m_point;
-    float m_segmentSq; ///< squared distance to the nearest segment: one square root at the end
-    float m_other;     ///< distance to the nearest circle or polygon
+    /// Squared distance to the nearest segment: one square root at the end.
+    float m_segmentSq = std::numeric_limits<float>::infinity();
+    float m_other = std::numeric_limits<float>::infinity(); ///< distance to the nearest circle or polygon
 };
 
 bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
@@ -307,13 +309,13 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
         // A primitive whose box misses this box is more than r + reach from `end` in one axis.
         query.Combine(PathBox(end, end, r + reach));
     }
-    Nearest nearest(end, r + reach);
+    Nearest nearest(end);
     bool found = false;
     // A primitive spanning several of the query's cells is listed in each: test it once. The few most
     // recent ones suffice, since a cell's neighbour lists mostly the same primitives.
     std::uint32_t recent[kRecent];
     std::uint32_t recentCount = 0;
-    m_staticGrid.Query(
+    const b2AABB covered = m_staticGrid.Query(
         query,
         [&](std::uint32_t index)
         {
@@ -369,7 +371,11 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
         });
     if (clearance != nullptr)
     {
-        const float distance = measure ? std::max(outside, nearest.Distance()) : outside;
+        // Primitives not visited lie outside the cells visited (`covered`, which holds `end`): they are
+        // at least `beyond` away.
+        const float beyond = std::min(std::min(end.x - covered.lowerBound.x, covered.upperBound.x - end.x),
+                                      std::min(end.y - covered.lowerBound.y, covered.upperBound.y - end.y));
+        const float distance = measure ? std::max(outside, std::min(nearest.Distance(), beyond)) : outside;
         *clearance = found ? 0.0f : std::max(0.0f, distance - r - kClearanceSlop);
     }
     return found;

@@ -101,9 +101,9 @@ public:
     ///
     /// With `clearance`, also measures it at the end of the motion when nothing is touched: a lower
     /// bound (m, >= 0) on how far the disc's centre can then move in any direction before the disc can
-    /// touch a static fixture the filter accepts. It looks at most `reach` (m, > 0) around the disc, so
-    /// the answer is at least `reach` when nothing is nearer (and can be much more outside the static
-    /// geometry's bounds). 0 when something was touched.
+    /// touch a static fixture the filter accepts. It looks at least `reach` (m, > 0) around the disc:
+    /// as far as the grid cells the query visits reach, and beyond the static geometry's bounds. So the
+    /// answer is at least `reach` when nothing is nearer, and often more. 0 when something was touched.
     bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result, float reach = 0.0f,
                      float* clearance = nullptr) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and

@@ -1,9 +1,16 @@
 // The disc sweeps and the grid, piece by piece.
 #include "particles/grid.h"
 #include "particles/sweep.h"
+#include "particles/world_geometry.h"
 
+#include <algorithm>
+#include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
 #include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_world.h>
+#include <cmath>
 #include <gtest/gtest.h>
+#include <random>
 #include <set>
 
 namespace cfx::particles
@@ -178,6 +185,117 @@ TEST(Grid, ListsEveryBoxInTheCellsItOverlaps)
     int visits = 0;
     grid.Query(outside, [&](std::uint32_t) { ++visits; });
     EXPECT_EQ(visits, 0);
+}
+
+TEST(Grid, ReturnsTheBoxItsVisitedCellsCover)
+{
+    std::vector<b2AABB> boxes;
+    for (int i = 0; i < 40; ++i)
+    {
+        b2AABB box;
+        box.lowerBound = b2Vec2(static_cast<float>(i), static_cast<float>(i % 7));
+        box.upperBound = box.lowerBound + b2Vec2(0.5f, 0.5f);
+        boxes.push_back(box);
+    }
+    Grid grid;
+    grid.Build(boxes);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> x(-5.0f, 45.0f);
+    std::uniform_real_distribution<float> y(-5.0f, 12.0f);
+    std::uniform_real_distribution<float> size(0.0f, 1.5f);
+    bool largerThanAsked = false;
+    for (int probe = 0; probe < 500; ++probe)
+    {
+        b2AABB query;
+        query.lowerBound = b2Vec2(x(random), y(random));
+        query.upperBound = query.lowerBound + b2Vec2(size(random), size(random));
+        std::set<std::uint32_t> visited;
+        const b2AABB covered = grid.Query(query, [&](std::uint32_t item) { visited.insert(item); });
+        EXPECT_TRUE(covered.lowerBound.x <= query.lowerBound.x &&
+                    covered.lowerBound.y <= query.lowerBound.y &&
+                    covered.upperBound.x >= query.upperBound.x && covered.upperBound.y >= query.upperBound.y)
+            << "the covered box holds the query, probe " << probe;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        {
+            if (!visited.count(i))
+            {
+                // Touching a side is fine: a point inside is still as far from the box as from the side.
+                const b2AABB& box = boxes[i];
+                const bool inside =
+                    box.upperBound.x > covered.lowerBound.x && box.upperBound.y > covered.lowerBound.y &&
+                    box.lowerBound.x < covered.upperBound.x && box.lowerBound.y < covered.upperBound.y;
+                EXPECT_FALSE(inside) << "box " << i << " not visited, probe " << probe;
+            }
+        }
+        largerThanAsked = largerThanAsked || covered.upperBound.x - covered.lowerBound.x >
+                                                 query.upperBound.x - query.lowerBound.x + 0.01f;
+    }
+    EXPECT_TRUE(largerThanAsked) << "the covered box reaches to the visited cells' sides";
+}
+
+namespace
+{
+
+// Two static chains of 0.5 m segments, along y = 0 and y = 4, from x = -10 to 10.
+struct TwoChains
+{
+    b2World world{b2Vec2(0.0f, -10.0f)};
+    WorldGeometry geometry;
+    ParticleSide side{0.05f, 0.0f, 0.0f, 0.0f, 0xffff, 0xffff};
+
+    TwoChains()
+    {
+        b2BodyDef def;
+        b2Body* ground = world.CreateBody(&def);
+        for (float height : {0.0f, 4.0f})
+        {
+            std::vector<b2Vec2> points;
+            for (int i = 0; i <= 40; ++i)
+            {
+                points.emplace_back(-10.0f + 0.5f * static_cast<float>(i), height);
+            }
+            b2ChainShape chain;
+            chain.CreateChain(points.data(), static_cast<int>(points.size()), points.front(), points.back());
+            ground->CreateFixture(&chain, 0.0f);
+        }
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+    }
+
+    // Distance from `point` to the nearest segment.
+    static float Distance(b2Vec2 point)
+    {
+        const float x = std::clamp(point.x, -10.0f, 10.0f);
+        return std::min(b2Distance(point, b2Vec2(x, 0.0f)), b2Distance(point, b2Vec2(x, 4.0f)));
+    }
+};
+
+} // namespace
+
+TEST(WorldGeometry, ClearanceReachesAsFarAsTheCellsItLookedAt)
+{
+    TwoChains scene;
+    const float reach = 0.05f;
+    SweepResult result;
+    float clearance = 0.0f;
+    const SweepInput in{b2Vec2(0.25f, 2.0f), b2Vec2(0.0f, -0.01f), scene.side.radius};
+    ASSERT_FALSE(scene.geometry.SweepStatic(in, scene.side, result, reach, &clearance));
+    EXPECT_GT(clearance, 2.0f * reach) << "more than the reach: nothing lies in the cells the query visited";
+    EXPECT_LE(clearance, TwoChains::Distance(in.p + in.d) - scene.side.radius);
+
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> x(-12.0f, 12.0f);
+    std::uniform_real_distribution<float> y(-2.0f, 6.0f);
+    for (int probe = 0; probe < 2000; ++probe)
+    {
+        const SweepInput at{b2Vec2(x(random), y(random)), b2Vec2(0.0f, 0.0f), scene.side.radius};
+        SweepResult hit;
+        if (!scene.geometry.SweepStatic(at, scene.side, hit, reach, &clearance))
+        {
+            // Within the radius of a chain, from behind (one-sided), the clearance is 0.
+            EXPECT_LE(clearance, std::max(0.0f, TwoChains::Distance(at.p) - scene.side.radius))
+                << "a lower bound at (" << at.p.x << ", " << at.p.y << ")";
+        }
+    }
 }
 
 } // namespace cfx::particles
