@@ -372,7 +372,7 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
     if (clearance != nullptr)
     {
         // Primitives not visited lie outside the cells visited (`covered`, which holds `end`): they are
-        // at least `beyond` away.
+        // at least `beyond` away (up to rounding in the cell sides, far below kClearanceSlop).
         const float beyond = std::min(std::min(end.x - covered.lowerBound.x, covered.upperBound.x - end.x),
                                       std::min(end.y - covered.lowerBound.y, covered.upperBound.y - end.y));
         const float distance = measure ? std::max(outside, std::min(nearest.Distance(), beyond)) : outside;
