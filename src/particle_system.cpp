@@ -45,6 +45,11 @@ constexpr float kRestSpeed = 0.5f;
 
 constexpr unsigned kMaxThreads = 8;
 
+// Particles a step without collision moves in the time a colliding step advances one (measured at 10,000
+// particles: 0.020 against 0.12 ms on one thread, and a split pays from about 2,000 colliding and 16,000
+// plain particles a thread): what scales minParticlesPerThread for such a step.
+constexpr std::uint32_t kPlainPerColliding = 8;
+
 // Bytes of the arrays every step walks, per slot; the layout promise of the header.
 constexpr std::size_t kHotBytesPerSlot = 6 * sizeof(float) + sizeof(std::uint16_t);
 static_assert(kHotBytesPerSlot == 26, "position, velocity, life, clearance and type: 26 bytes a particle");
@@ -330,7 +335,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         impl.lastBuilds = 0; // particles move without collision: their clearances and marks go stale
     }
 
-    const unsigned parts = std::clamp(m_count / impl.minPerThread, 1u, impl.threads);
+    const std::uint64_t perThread = std::uint64_t{impl.minPerThread} * (scan ? 1u : kPlainPerColliding);
+    const auto parts = static_cast<unsigned>(std::clamp<std::uint64_t>(m_count / perThread, 1, impl.threads));
     StepJob job{impl.Arrays(m_capacity),
                 impl.steps.data(),
                 scan ? &impl.geometry : nullptr,

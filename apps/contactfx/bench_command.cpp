@@ -60,6 +60,7 @@ Json ToJson(const bench::ParticleBenchResult& result)
     {
         out["plain_ms_min"] = result.plainMsMin;
         out["plain_ms_median"] = result.plainMsMedian;
+        out["plain_threads"] = result.plainThreads;
     }
     out["threads"] = result.threads;
     return out;
@@ -74,9 +75,9 @@ void PrintText(const bench::ParticleBenchResult& result)
     if (result.mode == "pool")
     {
         std::printf(
-            "  %-6s plain integration of the same arrays (no collision): min %.3f ms, median %.3f ms; "
-            "colliding update / plain = %.2fx\n",
-            "", result.plainMsMin, result.plainMsMedian,
+            "  %-6s plain integration of the same arrays (no collision): min %.3f ms, median %.3f ms, %u "
+            "thread(s); colliding update / plain = %.2fx\n",
+            "", result.plainMsMin, result.plainMsMedian, result.plainThreads,
             result.plainMsMedian > 0.0 ? result.updateMsMedian / result.plainMsMedian : 0.0);
     }
 }

@@ -196,7 +196,7 @@ ParticleBenchResult MeasureParticles(std::uint32_t count, ParticleBackend backen
             timings.step.push_back(Milliseconds(end - start));
             timings.update.push_back(Milliseconds(updateDone - worldDone));
         }
-        result.threads = scene.Particles().ThreadsUsed();
+        (plain ? result.plainThreads : result.threads) = scene.Particles().ThreadsUsed();
         if (updateMin != nullptr)
         {
             timings.Summarize(minOut, medianOut, timings.step);

@@ -73,6 +73,7 @@ struct ParticleBenchResult
     double plainMsMedian = 0.0;
     double bytesPerParticle = 0.0; ///< heap in use after warm-up minus before, per live particle
     unsigned threads = 1;          ///< threads the particle step used
+    unsigned plainThreads = 1;     ///< pool only: threads the plain integration used
 };
 
 /// Builds the scene, warms it up for `warmup` steps, then times `steps` steps. For the pool, also times

@@ -1,8 +1,18 @@
 // contactfx internal: the persistent helper threads (see workers.h).
 #include "particles/workers.h"
 
+#include <chrono>
+
 namespace cfx::particles
 {
+
+namespace
+{
+
+// How long Run waits awake for the helpers before it sleeps.
+constexpr std::chrono::microseconds kAwakeWait{200};
+
+} // namespace
 
 Workers::~Workers()
 {
@@ -34,13 +44,21 @@ void Workers::Run(unsigned parts, Task task, void* context)
         m_task = task;
         m_context = context;
         m_parts = parts;
-        m_pending = parts - 1;
+        m_pending.store(parts - 1, std::memory_order_relaxed);
         ++m_generation;
     }
     m_wake.notify_all();
     task(context, 0);
-    std::unique_lock<std::mutex> lock(m_mutex);
-    m_done.wait(lock, [this] { return m_pending == 0; });
+    const auto deadline = std::chrono::steady_clock::now() + kAwakeWait;
+    while (m_pending.load(std::memory_order_acquire) != 0 && std::chrono::steady_clock::now() < deadline)
+    {
+        std::this_thread::yield();
+    }
+    if (m_pending.load(std::memory_order_acquire) != 0)
+    {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_done.wait(lock, [this] { return m_pending.load(std::memory_order_acquire) == 0; });
+    }
 }
 
 void Workers::Loop(unsigned part)
@@ -66,11 +84,12 @@ void Workers::Loop(unsigned part)
             context = m_context;
         }
         task(context, part);
+        if (m_pending.fetch_sub(1, std::memory_order_acq_rel) == 1)
         {
+            // Under the lock, so that a Run about to sleep either sees 0 or gets this notice.
             std::lock_guard<std::mutex> lock(m_mutex);
-            --m_pending;
+            m_done.notify_one();
         }
-        m_done.notify_one();
     }
 }
 

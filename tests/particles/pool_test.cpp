@@ -295,6 +295,45 @@ TEST(ParticlePool, ResultsAreIdenticalWithOneOrTwoThreads)
     }
 }
 
+// A colliding step does about eight times the work per particle of a step without collision, so it is split
+// at minParticlesPerThread particles a thread and the other at eight times that.
+TEST(ParticlePool, CollidingStepsSplitAtFewerParticlesThanStepsWithoutCollision)
+{
+    ParticleSystemOptions options;
+    options.threads = 2;
+    options.minParticlesPerThread = 100;
+    ParticleTypeDef ghost = Ball();
+    ghost.collide = false;
+    Pool scene({Ball(), ghost}, {4000, RecyclePolicy::oldest}, options);
+    StaticChain(*scene.world, 20.0f, 0.5f, 0.0f);
+    auto fill = [&](std::uint32_t count, std::uint16_t type)
+    {
+        while (scene.system->Count() < count)
+        {
+            const auto i = static_cast<float>(scene.system->Count());
+            scene.Add(b2Vec2(-10.0f + 0.01f * i, 5.0f), b2Vec2(0.0f, 0.0f), 1.0f, type);
+        }
+    };
+    fill(250, 0);
+    scene.StepAll();
+    EXPECT_EQ(scene.system->ThreadsUsed(), 2u) << "250 colliding particles: 125 a thread";
+    scene.system->Integrate(kDt, scene.world->GetGravity());
+    EXPECT_EQ(scene.system->ThreadsUsed(), 1u) << "the same 250 without collision: under 800 a thread";
+    fill(1700, 0);
+    scene.system->Integrate(kDt, scene.world->GetGravity());
+    EXPECT_EQ(scene.system->ThreadsUsed(), 2u) << "1,700 without collision: 850 a thread";
+
+    Pool ghosts({ghost}, {4000, RecyclePolicy::oldest}, options);
+    StaticChain(*ghosts.world, 20.0f, 0.5f, 0.0f);
+    for (int i = 0; i < 1000; ++i)
+    {
+        ghosts.Add(b2Vec2(-10.0f + 0.01f * static_cast<float>(i), 5.0f));
+    }
+    ghosts.StepAll();
+    EXPECT_EQ(ghosts.system->ThreadsUsed(), 1u)
+        << "particles that collide with nothing step as without collision";
+}
+
 // Particles flying on their clearance and particles trusted to rest skip the sweep; a rebuilt static cache
 // (forced every step here) trusts nothing and sweeps every particle every step. The bits must not differ.
 TEST(ParticlePool, SkippedSweepsGiveTheSameBitsAsSweepingEveryStep)
