@@ -18,8 +18,9 @@ constexpr float kCellPerExtent = 1.0f;
 
 } // namespace
 
-void Grid::Build(std::span<const b2AABB> boxes)
+void Grid::Build(std::span<const b2AABB> boxes, Listing listing)
 {
+    m_listing = listing;
     m_items.clear();
     m_columns = 0;
     m_rows = 0;
@@ -60,15 +61,25 @@ void Grid::Build(std::span<const b2AABB> boxes)
 
     const std::size_t cells = static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows);
     m_cellStart.assign(cells + 1, 0);
-    for (const b2AABB& box : boxes)
+    const int spread = Spread();
+    // The cells listing a box: those it overlaps, and `spread` more on every side.
+    auto forCells = [&](const b2AABB& box, auto&& use)
     {
-        for (int y = Row(box.lowerBound.y); y <= Row(box.upperBound.y); ++y)
+        const int x0 = std::max(Column(box.lowerBound.x) - spread, 0);
+        const int x1 = std::min(Column(box.upperBound.x) + spread, m_columns - 1);
+        const int y0 = std::max(Row(box.lowerBound.y) - spread, 0);
+        const int y1 = std::min(Row(box.upperBound.y) + spread, m_rows - 1);
+        for (int y = y0; y <= y1; ++y)
         {
-            for (int x = Column(box.lowerBound.x); x <= Column(box.upperBound.x); ++x)
+            for (int x = x0; x <= x1; ++x)
             {
-                ++m_cellStart[static_cast<std::size_t>(y * m_columns + x) + 1];
+                use(static_cast<std::size_t>(y * m_columns + x));
             }
         }
+    };
+    for (const b2AABB& box : boxes)
+    {
+        forCells(box, [&](std::size_t c) { ++m_cellStart[c + 1]; });
     }
     for (std::size_t c = 0; c < cells; ++c)
     {
@@ -78,14 +89,7 @@ void Grid::Build(std::span<const b2AABB> boxes)
     // Fill using the row starts as cursors, then shift them back.
     for (std::uint32_t index = 0; index < boxes.size(); ++index)
     {
-        const b2AABB& box = boxes[index];
-        for (int y = Row(box.lowerBound.y); y <= Row(box.upperBound.y); ++y)
-        {
-            for (int x = Column(box.lowerBound.x); x <= Column(box.upperBound.x); ++x)
-            {
-                m_items[m_cellStart[static_cast<std::size_t>(y * m_columns + x)]++] = index;
-            }
-        }
+        forCells(boxes[index], [&](std::size_t c) { m_items[m_cellStart[c]++] = index; });
     }
     for (std::size_t c = cells; c > 0; --c)
     {

@@ -4,11 +4,16 @@
 // callback per hit; a particle system asks that question for every particle every step, and its
 // answers rarely change. A uniform grid over the shapes' bounds, stored as compressed rows (the items of
 // cell c are items[cellStart[c] .. cellStart[c + 1])), answers it with two float-to-int conversions and a
-// contiguous read. An item is listed in every cell its box overlaps. Boxes outside the grid's bounds
-// overlap nothing, so a particle far from all geometry costs one box test.
+// contiguous read. Boxes outside the grid's bounds overlap nothing, so a particle far from all geometry
+// costs one box test.
 //
-// Build allocates only when the grid needs more room than any earlier build; Query is const and safe
-// from any number of threads at once.
+// A grid lists each item either in the cells its box overlaps, or in every cell within one cell of
+// those (its neighbourhood). The second takes about three times the memory and answers "what is near
+// this point" from a single cell: the cell's list holds every item within a cell's width of any point in
+// it, with no item met twice and nothing to merge.
+//
+// Build allocates only when the grid needs more room than any earlier build; Query and Around are const
+// and safe from any number of threads at once.
 #pragma once
 
 #include <algorithm>
@@ -24,15 +29,22 @@ namespace cfx::particles
 class Grid
 {
 public:
-    /// Lists every box in the cells it overlaps. The cell size follows the boxes' median extent,
-    /// grown until there are at most max(1024, 16 * boxes) cells.
-    void Build(std::span<const b2AABB> boxes);
+    /// Where a grid lists an item.
+    enum class Listing : std::uint8_t
+    {
+        overlapped,   ///< in the cells its box overlaps
+        neighbourhood ///< also in the cells next to those (their 3 x 3 blocks)
+    };
 
-    /// Calls visit(item) for the items listed in the cells `box` overlaps, cell by cell in row order;
-    /// an item overlapping several of those cells is visited once per cell. Returns the box those
-    /// cells cover, its sides on the grid's edges pushed to infinity: no item that was not visited
-    /// overlaps it, so a point inside is at least its distance to the returned box's sides away from
-    /// every such item. It contains `box`.
+    /// Lists every box as `listing` says. The cell size follows the boxes' median extent, grown until
+    /// there are at most max(1024, 16 * boxes) cells.
+    void Build(std::span<const b2AABB> boxes, Listing listing = Listing::overlapped);
+
+    /// Calls visit(item) for every item whose box overlaps `box`, and some others; an item may be
+    /// visited more than once. Returns a box that contains `box`, its sides on the grid's edges pushed to
+    /// infinity: no item that was not visited overlaps it, so a point inside is at least its distance to
+    /// the returned box's sides away from every such item. A neighbourhood grid visits every third cell
+    /// in each direction (each cell's list covers its neighbours).
     template <typename Visit> b2AABB Query(const b2AABB& box, Visit&& visit) const
     {
         if (m_items.empty() || box.upperBound.x < m_lower.x || box.upperBound.y < m_lower.y ||
@@ -44,25 +56,47 @@ public:
         const int x1 = Column(box.upperBound.x);
         const int y0 = Row(box.lowerBound.y);
         const int y1 = Row(box.upperBound.y);
-        for (int y = y0; y <= y1; ++y)
+        // The cells visited, every (2 spread + 1)-th; each lists what lies `spread` cells on either side.
+        const int spread = Spread();
+        const int stride = 2 * spread + 1;
+        const int firstX = std::min(x0 + spread, x1);
+        const int firstY = std::min(y0 + spread, y1);
+        int lastX = firstX;
+        int lastY = firstY;
+        for (int y = firstY;; y = std::min(y + stride, y1))
         {
             const std::uint32_t* start = m_cellStart.data() + y * m_columns;
-            for (int x = x0; x <= x1; ++x)
+            for (int x = firstX;; x = std::min(x + stride, x1))
             {
                 for (std::uint32_t k = start[x]; k < start[x + 1]; ++k)
                 {
                     visit(m_items[k]);
                 }
+                if (x + spread >= x1)
+                {
+                    lastX = x;
+                    break;
+                }
+            }
+            if (y + spread >= y1)
+            {
+                lastY = y;
+                break;
             }
         }
-        constexpr float kEdge = std::numeric_limits<float>::infinity();
-        b2AABB covered;
-        covered.lowerBound.x = x0 == 0 ? -kEdge : m_lower.x + static_cast<float>(x0) * m_cellSize;
-        covered.lowerBound.y = y0 == 0 ? -kEdge : m_lower.y + static_cast<float>(y0) * m_cellSize;
-        covered.upperBound.x =
-            x1 == m_columns - 1 ? kEdge : m_lower.x + static_cast<float>(x1 + 1) * m_cellSize;
-        covered.upperBound.y = y1 == m_rows - 1 ? kEdge : m_lower.y + static_cast<float>(y1 + 1) * m_cellSize;
-        return covered;
+        return CellsBox(firstX - spread, lastX + spread, firstY - spread, lastY + spread);
+    }
+
+    /// The items of the cell holding `point` (of the nearest cell when `point` is outside the grid's
+    /// bounds). In a neighbourhood grid an item not among them is more than CellSize() from `point`.
+    std::span<const std::uint32_t> Around(b2Vec2 point) const
+    {
+        if (m_items.empty())
+        {
+            return {};
+        }
+        const std::size_t cell = static_cast<std::size_t>(Row(point.y) * m_columns + Column(point.x));
+        return {m_items.data() + m_cellStart[cell], m_items.data() + m_cellStart[cell + 1]};
     }
 
     /// The box every item lies in; an empty box (lower above upper, overlapping nothing) when there are
@@ -83,6 +117,19 @@ public:
     std::size_t Bytes() const;
 
 private:
+    // How many cells on every side of the cells an item overlaps also list it.
+    int Spread() const { return m_listing == Listing::neighbourhood ? 1 : 0; }
+    // The box of columns [x0, x1] and rows [y0, y1], its sides on or beyond the grid's edges at infinity.
+    b2AABB CellsBox(int x0, int x1, int y0, int y1) const
+    {
+        constexpr float kEdge = std::numeric_limits<float>::infinity();
+        b2AABB box;
+        box.lowerBound.x = x0 <= 0 ? -kEdge : m_lower.x + static_cast<float>(x0) * m_cellSize;
+        box.lowerBound.y = y0 <= 0 ? -kEdge : m_lower.y + static_cast<float>(y0) * m_cellSize;
+        box.upperBound.x = x1 >= m_columns - 1 ? kEdge : m_lower.x + static_cast<float>(x1 + 1) * m_cellSize;
+        box.upperBound.y = y1 >= m_rows - 1 ? kEdge : m_lower.y + static_cast<float>(y1 + 1) * m_cellSize;
+        return box;
+    }
     int Column(float x) const
     {
         const float cell = (x - m_lower.x) * m_inverseCell;
@@ -100,7 +147,8 @@ private:
     float m_inverseCell = 1.0f;
     int m_columns = 0;
     int m_rows = 0;
-    std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1
+    Listing m_listing = Listing::overlapped;
+    std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1 (1 when empty)
     std::vector<std::uint32_t> m_items;
     std::vector<float> m_scratch;
 };

@@ -11,9 +11,10 @@
 // that is a free flight, exactly what the sweep would have given, and costs a subtraction; so a particle
 // in the air pays for a grid query only every so often instead of every step. The loop runs in blocks:
 // pass 1 flies every particle of the block and lists those whose flight used up their clearance (or
-// that are resting, or whose path meets a moving body's bounds); pass 2 sweeps the listed ones through
-// the geometry and measures their new clearance. Whether a particle is listed is as good as random from
-// one particle to the next, so pass 1 lists without a branch; the block keeps both passes in cache.
+// that are resting, or whose path meets a moving body's bounds); pass 2 puts the resting ones back and
+// sweeps the others through the geometry, measuring their new clearance. Whether a particle is listed, or
+// rests, is as good as random from one particle to the next, so both passes sort them without a branch;
+// the block keeps both passes in cache.
 #include "particles/motion.h"
 
 #include <array>
@@ -45,6 +46,13 @@ constexpr float kNothingToTouch = std::numeric_limits<float>::infinity();
 // and at least and at most (m): far enough to skip several steps, near enough to keep the query small.
 constexpr float kReachSteps = 4.0f;
 constexpr float kMinReach = 0.05f;
+
+// `mask` all ones: a, else b; without a branch.
+float Select(std::uint32_t mask, float a, float b)
+{
+    return std::bit_cast<float>((std::bit_cast<std::uint32_t>(a) & mask) |
+                                (std::bit_cast<std::uint32_t>(b) & ~mask));
+}
 
 bool SameBits(b2Vec2 a, b2Vec2 b)
 {
@@ -148,8 +156,27 @@ struct Listed
 void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeometry& geometry, float dt,
                  const StepTrust& trust, const Listed& listed, std::uint32_t count)
 {
+    // A particle trusted to rest stays where it started, at rest. Whether a listed particle rests is as
+    // good as random, so they are put back without a branch and only the others are swept on (all of
+    // them when there are moving shapes, which may still meet a resting particle).
+    std::array<std::uint32_t, kBlock> toSweep;
+    std::uint32_t sweepCount = 0;
+    const std::uint32_t sweepResting = geometry.HasMoving() ? 1u : 0u;
     for (std::uint32_t k = 0; k < count; ++k)
     {
+        const std::uint32_t slot = listed.slot[k];
+        const std::uint32_t rests = trust.resting & (pool.clearance[slot] == kResting) ? 1u : 0u;
+        const std::uint32_t mask = 0u - rests;
+        pool.positionX[slot] = Select(mask, listed.startX[k], pool.positionX[slot]);
+        pool.positionY[slot] = Select(mask, listed.startY[k], pool.positionY[slot]);
+        pool.velocityX[slot] = Select(mask, 0.0f, pool.velocityX[slot]);
+        pool.velocityY[slot] = Select(mask, 0.0f, pool.velocityY[slot]);
+        toSweep[sweepCount] = k;
+        sweepCount += (rests ^ 1u) | sweepResting;
+    }
+    for (std::uint32_t j = 0; j < sweepCount; ++j)
+    {
+        const std::uint32_t k = toSweep[j];
         const std::uint32_t slot = listed.slot[k];
         const TypeStep& type = types[pool.type[slot]];
         if (!type.sweeps)

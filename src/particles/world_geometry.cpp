@@ -20,26 +20,59 @@ namespace cfx::particles
 namespace
 {
 
+constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
+constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
+
+std::uint64_t Word(b2Vec2 value)
+{
+    return (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value.x)) << 32u) |
+           std::bit_cast<std::uint32_t>(value.y);
+}
+
 // FNV-1a over 64-bit words.
 class Signature
 {
 public:
-    void Add(std::uint64_t word) { m_hash = (m_hash ^ word) * 0x100000001b3ULL; }
+    void Add(std::uint64_t word) { m_hash = (m_hash ^ word) * kFnvPrime; }
     void Add(const void* pointer)
     {
         Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(pointer)));
     }
     void Add(float value) { Add(static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value))); }
-    void Add(b2Vec2 value)
+    void Add(b2Vec2 value) { Add(Word(value)); }
+    /// The boxes of a fixture's children. A chain has hundreds, and one FNV chain over them waits a
+    /// multiplication's latency per word; four chains, one for every fourth child, run side by side.
+    void AddChildBoxes(const b2Fixture& fixture, int children)
     {
-        Add((static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value.x)) << 32u) |
-            std::bit_cast<std::uint32_t>(value.y));
+        std::uint64_t lanes[4] = {kFnvBasis, kFnvBasis + 1, kFnvBasis + 2, kFnvBasis + 3};
+        int child = 0;
+        auto add = [&](std::uint64_t& lane, int index)
+        {
+            const b2AABB& box = fixture.GetAABB(index);
+            lane = (lane ^ Word(box.lowerBound)) * kFnvPrime;
+            lane = (lane ^ Word(box.upperBound)) * kFnvPrime;
+        };
+        for (; child + 4 <= children; child += 4)
+        {
+            add(lanes[0], child);
+            add(lanes[1], child + 1);
+            add(lanes[2], child + 2);
+            add(lanes[3], child + 3);
+        }
+        for (; child < children; ++child)
+        {
+            add(lanes[0], child);
+        }
+        for (const std::uint64_t lane : lanes)
+        {
+            Add(lane);
+        }
     }
     /// Never 0, so that 0 can mean "invalid".
     std::uint64_t Value() const { return m_hash == 0 ? 1 : m_hash; }
 
 private:
-    std::uint64_t m_hash = 0xcbf29ce484222325ULL;
+    std::uint64_t m_hash = kFnvBasis;
 };
 
 void AddStaticBody(Signature& signature, const b2Body& body)
@@ -59,12 +92,7 @@ void AddStaticBody(Signature& signature, const b2Body& body)
         signature.Add(fixture->GetRestitutionThreshold());
         const int children = fixture->GetShape()->GetChildCount();
         signature.Add(static_cast<std::uint64_t>(children));
-        for (int child = 0; child < children; ++child)
-        {
-            const b2AABB& box = fixture->GetAABB(child);
-            signature.Add(box.lowerBound);
-            signature.Add(box.upperBound);
-        }
+        signature.AddChildBoxes(*fixture, children);
     }
 }
 
@@ -244,16 +272,22 @@ void WorldGeometry::BuildStatic(b2World& world)
             }
         }
     }
-    m_staticGrid.Build(m_primitiveBoxes);
+    m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood);
 }
 
-// The distances from one point to the static primitives near it: the clearance's part of a sweep.
+// The distances from one point to the static primitives near it: the clearance's part of a sweep, and a
+// cheap test that skips the sweep of a primitive the disc cannot reach this step.
 class WorldGeometry::Nearest
 {
 public:
-    explicit Nearest(b2Vec2 point) : m_point(point) {}
+    /// `reachable`: how far (m) from `point` the disc can touch anything this step.
+    Nearest(b2Vec2 point, float reachable)
+        : m_point(point), m_reachable(reachable), m_reachableSq(reachable * reachable)
+    {
+    }
 
-    void Add(const WorldGeometry& geometry, const Primitive& primitive)
+    /// Takes the primitive's distance into account; returns whether it lies within `reachable`.
+    bool Add(const WorldGeometry& geometry, const Primitive& primitive)
     {
         switch (primitive.kind)
         {
@@ -261,12 +295,16 @@ public:
         {
             const b2Vec2 e = primitive.b - primitive.a;
             const float u = std::clamp(b2Dot(m_point - primitive.a, e) * primitive.scalar, 0.0f, 1.0f);
-            m_segmentSq = std::min(m_segmentSq, b2DistanceSquared(m_point, primitive.a + u * e));
-            break;
+            const float distanceSq = b2DistanceSquared(m_point, primitive.a + u * e);
+            m_segmentSq = std::min(m_segmentSq, distanceSq);
+            return distanceSq <= m_reachableSq;
         }
         case Kind::circle:
-            m_other = std::min(m_other, b2Distance(m_point, primitive.a) - primitive.scalar);
-            break;
+        {
+            const float distance = b2Distance(m_point, primitive.a) - primitive.scalar;
+            m_other = std::min(m_other, distance);
+            return distance <= m_reachable;
+        }
         case Kind::polygon:
         {
             // The polygon lies behind each edge's line: its distance is at least the largest separation.
@@ -278,9 +316,10 @@ public:
                 separation = std::max(separation, b2Dot(normals[i], m_point - vertices[i]));
             }
             m_other = std::min(m_other, separation);
-            break;
+            return separation <= m_reachable;
         }
         }
+        return true;
     }
 
     /// The least distance seen (infinity when none).
@@ -288,6 +327,8 @@ public:
 
 private:
     b2Vec2 m_point;
+    float m_reachable;
+    float m_reachableSq;
     /// Squared distance to the nearest segment: one square root at the end.
     float m_segmentSq = std::numeric_limits<float>::infinity();
     float m_other = std::numeric_limits<float>::infinity(); ///< distance to the nearest circle or polygon
@@ -298,81 +339,94 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
 {
     const b2Vec2 end = in.p + in.d;
     const float r = in.radius;
-    b2AABB query = PathBox(in.p, end, r);
     // Every primitive lies in the grid's bounds, so it is at least as far from `end` as the bounds are.
     const b2AABB bounds = m_staticGrid.Bounds();
     const float outside = std::max(std::max(bounds.lowerBound.x - end.x, end.x - bounds.upperBound.x),
                                    std::max(bounds.lowerBound.y - end.y, end.y - bounds.upperBound.y));
+    // The disc's path lies within |d| + r of `end`: a primitive farther than that is not swept. The slop
+    // covers rounding in the distances, so that the skip never changes a result.
+    Nearest nearest(end, std::sqrt(b2Dot(in.d, in.d)) + r + kClearanceSlop);
+    bool found = false;
+    auto test = [&](std::uint32_t index)
+    {
+        const Primitive& primitive = m_primitives[index];
+        if ((primitive.maskBits & side.categoryBits) == 0 || (primitive.categoryBits & side.maskBits) == 0 ||
+            !nearest.Add(*this, primitive))
+        {
+            return;
+        }
+        bool hit = false;
+        switch (primitive.kind)
+        {
+        case Kind::segment:
+            hit = SweepSegment(
+                in, Segment{primitive.a, primitive.b, primitive.normal, primitive.scalar, primitive.oneSided},
+                result.touch);
+            break;
+        case Kind::circle:
+            hit = SweepCircle(in, primitive.a, primitive.scalar, result.touch);
+            break;
+        case Kind::polygon:
+            hit = SweepPolygon(in, m_polygonVertices.data() + primitive.first,
+                               m_polygonNormals.data() + primitive.first, primitive.count, result.touch);
+            break;
+        }
+        if (hit)
+        {
+            result.material = &m_materials[primitive.material];
+            result.surfaceVelocity = b2Vec2(0.0f, 0.0f);
+            found = true;
+        }
+    };
+
+    // Most motions stay within a cell's width of `end` (the disc's path lies within |d| + r of it): the
+    // list of end's cell holds every primitive they can touch, and every primitive nearer than a cell.
+    const float cell = m_staticGrid.CellSize();
+    if (r < cell && b2Dot(in.d, in.d) <= (cell - r) * (cell - r))
+    {
+        if (outside <= cell) // else every primitive is more than a cell away
+        {
+            for (const std::uint32_t index : m_staticGrid.Around(end))
+            {
+                test(index);
+            }
+        }
+        if (clearance != nullptr)
+        {
+            const float distance = std::min(nearest.Distance(), std::max(cell, outside));
+            *clearance = found ? 0.0f : std::max(0.0f, distance - r - kClearanceSlop);
+        }
+        return found;
+    }
+
+    b2AABB query = PathBox(in.p, end, r);
     const bool measure = clearance != nullptr && outside - r < reach;
     if (measure)
     {
         // A primitive whose box misses this box is more than r + reach from `end` in one axis.
         query.Combine(PathBox(end, end, r + reach));
     }
-    Nearest nearest(end);
-    bool found = false;
-    // A primitive spanning several of the query's cells is listed in each: test it once. The few most
+    // A primitive listed in several of the cells visited is met once per cell: test it once. The few most
     // recent ones suffice, since a cell's neighbour lists mostly the same primitives.
     std::uint32_t recent[kRecent];
     std::uint32_t recentCount = 0;
-    const b2AABB covered = m_staticGrid.Query(
-        query,
-        [&](std::uint32_t index)
+    auto testOnce = [&](std::uint32_t index)
+    {
+        for (std::uint32_t k = 0; k < recentCount && k < kRecent; ++k)
         {
-            for (std::uint32_t k = 0; k < recentCount && k < kRecent; ++k)
-            {
-                if (recent[k] == index)
-                {
-                    return;
-                }
-            }
-            recent[recentCount++ % kRecent] = index;
-            const Primitive& primitive = m_primitives[index];
-            if ((primitive.maskBits & side.categoryBits) == 0 ||
-                (primitive.categoryBits & side.maskBits) == 0)
+            if (recent[k] == index)
             {
                 return;
             }
-            if (measure)
-            {
-                nearest.Add(*this, primitive);
-            }
-            bool hit = false;
-            switch (primitive.kind)
-            {
-            case Kind::segment:
-                hit = SweepSegment(
-                    in,
-                    Segment{primitive.a, primitive.b, primitive.normal, primitive.scalar, primitive.oneSided},
-                    result.touch);
-                break;
-            case Kind::circle:
-                hit = SweepCircle(in, primitive.a, primitive.scalar, result.touch);
-                break;
-            case Kind::polygon:
-            {
-                const b2AABB& box = m_primitiveBoxes[index];
-                if (query.upperBound.x < box.lowerBound.x || query.upperBound.y < box.lowerBound.y ||
-                    query.lowerBound.x > box.upperBound.x || query.lowerBound.y > box.upperBound.y)
-                {
-                    return;
-                }
-                hit = SweepPolygon(in, m_polygonVertices.data() + primitive.first,
-                                   m_polygonNormals.data() + primitive.first, primitive.count, result.touch);
-                break;
-            }
-            }
-            if (hit)
-            {
-                result.material = &m_materials[primitive.material];
-                result.surfaceVelocity = b2Vec2(0.0f, 0.0f);
-                found = true;
-            }
-        });
+        }
+        recent[recentCount++ % kRecent] = index;
+        test(index);
+    };
+    const b2AABB covered = m_staticGrid.Query(query, testOnce);
     if (clearance != nullptr)
     {
-        // Primitives not visited lie outside the cells visited (`covered`, which holds `end`): they are
-        // at least `beyond` away (up to rounding in the cell sides, far below kClearanceSlop).
+        // Primitives not visited lie outside `covered` (which holds `end`): they are at least `beyond`
+        // away (up to rounding in the cell sides, far below kClearanceSlop).
         const float beyond = std::min(std::min(end.x - covered.lowerBound.x, covered.upperBound.x - end.x),
                                       std::min(end.y - covered.lowerBound.y, covered.upperBound.y - end.y));
         const float distance = measure ? std::max(outside, std::min(nearest.Distance(), beyond)) : outside;

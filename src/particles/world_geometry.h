@@ -1,14 +1,14 @@
 // contactfx internal: the world's fixtures as pool particles see them.
 //
 // Static geometry is copied once into flat world-space primitives (segments, circles, convex polygons)
-// listed in a uniform grid, and copied again only when it changes. Box2D 2.4 tells nobody when a fixture
-// is created, so every step walks the world's body list once and folds what defines the static geometry
-// (each enabled static body's address and transform; each solid fixture's address, shape type, filter,
-// friction, restitution and threshold; each child's broad-phase box) into a 64-bit signature; a different
-// signature rebuilds the cache. This catches created, destroyed, moved, enabled, disabled and re-filtered
-// static fixtures, including a new fixture at a freed fixture's address (its box differs). Editing a
-// shape's vertices in place is not caught (Box2D's broad phase would not see it either): call
-// Invalidate() after doing that.
+// listed in a uniform grid (each in its neighbourhood, see grid.h), and copied again only when it changes.
+// Box2D 2.4 tells nobody when a fixture is created, so every step walks the world's body list once and folds
+// what defines the static geometry (each enabled static body's address and transform; each solid fixture's
+// address, shape type, filter, friction, restitution and threshold; each child's broad-phase box) into a
+// 64-bit signature; a different signature rebuilds the cache. This catches created, destroyed, moved,
+// enabled, disabled and re-filtered static fixtures, including a new fixture at a freed fixture's address
+// (its box differs). Editing a shape's vertices in place is not caught (Box2D's broad phase would not see it
+// either): call Invalidate() after doing that.
 //
 // Moving geometry (dynamic and kinematic bodies, awake or asleep) is gathered during the same walk into
 // a per-step list and its own grid, keyed by each child's broad-phase box, which Box2D sets to cover the
@@ -101,9 +101,11 @@ public:
     ///
     /// With `clearance`, also measures it at the end of the motion when nothing is touched: a lower
     /// bound (m, >= 0) on how far the disc's centre can then move in any direction before the disc can
-    /// touch a static fixture the filter accepts. It looks at least `reach` (m, > 0) around the disc:
-    /// as far as the grid cells the query visits reach, and beyond the static geometry's bounds. So the
-    /// answer is at least `reach` when nothing is nearer, and often more. 0 when something was touched.
+    /// touch a static fixture the filter accepts. A motion shorter than a grid cell less the radius (most
+    /// of them) is answered from the list of the cell `end` lies in, which holds everything within a cell
+    /// of it: the clearance looks a cell around. A longer one queries the cells its path covers and
+    /// looks at least `reach` (m, > 0) around `end`, as far as the cells visited reach. Beyond the static
+    /// geometry's bounds it is at least the distance to them. 0 when something was touched.
     bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result, float reach = 0.0f,
                      float* clearance = nullptr) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and

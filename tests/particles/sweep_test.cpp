@@ -6,12 +6,16 @@
 #include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_chain_shape.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_edge_shape.h>
+#include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
 #include <set>
+#include <span>
 
 namespace cfx::particles
 {
@@ -151,7 +155,9 @@ TEST(Sweep, RespondBouncesRestsAndRubs)
     EXPECT_EQ(Respond(b2Vec2(0.0f, 4.0f), up, surface).y, 4.0f) << "leaving: kept";
 }
 
-TEST(Grid, ListsEveryBoxInTheCellsItOverlaps)
+constexpr Grid::Listing kListings[] = {Grid::Listing::overlapped, Grid::Listing::neighbourhood};
+
+TEST(Grid, VisitsEveryBoxTheQueryOverlaps)
 {
     std::vector<b2AABB> boxes;
     for (int i = 0; i < 100; ++i)
@@ -161,30 +167,35 @@ TEST(Grid, ListsEveryBoxInTheCellsItOverlaps)
         box.upperBound = b2Vec2(static_cast<float>(i) + 1.5f, 1.0f);
         boxes.push_back(box);
     }
-    Grid grid;
-    grid.Build(boxes);
-    ASSERT_FALSE(grid.Empty());
-    for (int probe = 0; probe < 100; ++probe)
+    for (const Grid::Listing listing : kListings)
     {
-        b2AABB query;
-        query.lowerBound = b2Vec2(static_cast<float>(probe) + 0.25f, 0.5f);
-        query.upperBound = query.lowerBound + b2Vec2(0.1f, 0.1f);
-        std::set<std::uint32_t> found;
-        grid.Query(query, [&](std::uint32_t item) { found.insert(item); });
-        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        SCOPED_TRACE(listing == Grid::Listing::overlapped ? "overlapped" : "neighbourhood");
+        Grid grid;
+        grid.Build(boxes, listing);
+        ASSERT_FALSE(grid.Empty());
+        for (int probe = 0; probe < 100; ++probe)
         {
-            if (b2TestOverlap(boxes[i], query))
+            b2AABB query;
+            // From a tenth of a cell to several cells wide.
+            query.lowerBound = b2Vec2(static_cast<float>(probe) + 0.25f, 0.5f);
+            query.upperBound = query.lowerBound + b2Vec2(0.1f + 0.08f * static_cast<float>(probe), 0.1f);
+            std::set<std::uint32_t> found;
+            grid.Query(query, [&](std::uint32_t item) { found.insert(item); });
+            for (std::uint32_t i = 0; i < boxes.size(); ++i)
             {
-                EXPECT_TRUE(found.count(i)) << "box " << i << " at probe " << probe;
+                if (b2TestOverlap(boxes[i], query))
+                {
+                    EXPECT_TRUE(found.count(i)) << "box " << i << " at probe " << probe;
+                }
             }
         }
+        b2AABB outside;
+        outside.lowerBound = b2Vec2(0.0f, 50.0f);
+        outside.upperBound = b2Vec2(1.0f, 51.0f);
+        int visits = 0;
+        grid.Query(outside, [&](std::uint32_t) { ++visits; });
+        EXPECT_EQ(visits, 0);
     }
-    b2AABB outside;
-    outside.lowerBound = b2Vec2(0.0f, 50.0f);
-    outside.upperBound = b2Vec2(1.0f, 51.0f);
-    int visits = 0;
-    grid.Query(outside, [&](std::uint32_t) { ++visits; });
-    EXPECT_EQ(visits, 0);
 }
 
 TEST(Grid, ReturnsTheBoxItsVisitedCellsCover)
@@ -197,40 +208,97 @@ TEST(Grid, ReturnsTheBoxItsVisitedCellsCover)
         box.upperBound = box.lowerBound + b2Vec2(0.5f, 0.5f);
         boxes.push_back(box);
     }
-    Grid grid;
-    grid.Build(boxes);
-    std::mt19937 random(7);
-    std::uniform_real_distribution<float> x(-5.0f, 45.0f);
-    std::uniform_real_distribution<float> y(-5.0f, 12.0f);
-    std::uniform_real_distribution<float> size(0.0f, 1.5f);
-    bool largerThanAsked = false;
-    for (int probe = 0; probe < 500; ++probe)
+    for (const Grid::Listing listing : kListings)
     {
-        b2AABB query;
-        query.lowerBound = b2Vec2(x(random), y(random));
-        query.upperBound = query.lowerBound + b2Vec2(size(random), size(random));
-        std::set<std::uint32_t> visited;
-        const b2AABB covered = grid.Query(query, [&](std::uint32_t item) { visited.insert(item); });
-        EXPECT_TRUE(covered.lowerBound.x <= query.lowerBound.x &&
-                    covered.lowerBound.y <= query.lowerBound.y &&
-                    covered.upperBound.x >= query.upperBound.x && covered.upperBound.y >= query.upperBound.y)
-            << "the covered box holds the query, probe " << probe;
-        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        SCOPED_TRACE(listing == Grid::Listing::overlapped ? "overlapped" : "neighbourhood");
+        Grid grid;
+        grid.Build(boxes, listing);
+        std::mt19937 random(7);
+        std::uniform_real_distribution<float> x(-5.0f, 45.0f);
+        std::uniform_real_distribution<float> y(-5.0f, 12.0f);
+        std::uniform_real_distribution<float> size(0.0f, 1.5f);
+        bool largerThanAsked = false;
+        for (int probe = 0; probe < 500; ++probe)
         {
-            if (!visited.count(i))
+            b2AABB query;
+            query.lowerBound = b2Vec2(x(random), y(random));
+            query.upperBound = query.lowerBound + b2Vec2(size(random), size(random));
+            std::set<std::uint32_t> visited;
+            const b2AABB covered = grid.Query(query, [&](std::uint32_t item) { visited.insert(item); });
+            EXPECT_TRUE(
+                covered.lowerBound.x <= query.lowerBound.x && covered.lowerBound.y <= query.lowerBound.y &&
+                covered.upperBound.x >= query.upperBound.x && covered.upperBound.y >= query.upperBound.y)
+                << "the covered box holds the query, probe " << probe;
+            for (std::uint32_t i = 0; i < boxes.size(); ++i)
             {
-                // Touching a side is fine: a point inside is still as far from the box as from the side.
-                const b2AABB& box = boxes[i];
-                const bool inside =
-                    box.upperBound.x > covered.lowerBound.x && box.upperBound.y > covered.lowerBound.y &&
-                    box.lowerBound.x < covered.upperBound.x && box.lowerBound.y < covered.upperBound.y;
-                EXPECT_FALSE(inside) << "box " << i << " not visited, probe " << probe;
+                if (!visited.count(i))
+                {
+                    // Touching a side is fine: a point inside is still as far from the box as from the side.
+                    const b2AABB& box = boxes[i];
+                    const bool inside =
+                        box.upperBound.x > covered.lowerBound.x && box.upperBound.y > covered.lowerBound.y &&
+                        box.lowerBound.x < covered.upperBound.x && box.lowerBound.y < covered.upperBound.y;
+                    EXPECT_FALSE(inside) << "box " << i << " not visited, probe " << probe;
+                }
+            }
+            largerThanAsked = largerThanAsked || covered.upperBound.x - covered.lowerBound.x >
+                                                     query.upperBound.x - query.lowerBound.x + 0.01f;
+        }
+        EXPECT_TRUE(largerThanAsked) << "the covered box reaches to the visited cells' sides";
+    }
+}
+
+// A neighbourhood grid answers "what lies within a cell of this point" from the point's cell alone, also
+// for points outside the grid's bounds (the nearest cell's list).
+TEST(Grid, ANeighbourhoodCellListsEverythingWithinACellOfItsPoints)
+{
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> where(0.0f, 20.0f);
+    std::uniform_real_distribution<float> size(0.05f, 1.2f);
+    std::vector<b2AABB> boxes;
+    for (int i = 0; i < 60; ++i)
+    {
+        b2AABB box;
+        box.lowerBound = b2Vec2(where(random), 0.5f * where(random));
+        box.upperBound = box.lowerBound + b2Vec2(size(random), size(random));
+        boxes.push_back(box);
+    }
+    auto distance = [](const b2AABB& box, b2Vec2 point)
+    {
+        const b2Vec2 nearest(std::clamp(point.x, box.lowerBound.x, box.upperBound.x),
+                             std::clamp(point.y, box.lowerBound.y, box.upperBound.y));
+        return b2Distance(point, nearest);
+    };
+    std::uniform_real_distribution<float> probe(-3.0f, 23.0f);
+    for (const Grid::Listing listing : kListings)
+    {
+        Grid grid;
+        grid.Build(boxes, listing);
+        const float cell = grid.CellSize();
+        int missed = 0;
+        std::size_t listed = 0;
+        for (int i = 0; i < 3000; ++i)
+        {
+            const b2Vec2 point(probe(random), 0.6f * probe(random));
+            const std::span<const std::uint32_t> around = grid.Around(point);
+            const std::set<std::uint32_t> items(around.begin(), around.end());
+            EXPECT_EQ(items.size(), around.size()) << "each item once";
+            listed += around.size();
+            for (std::uint32_t k = 0; k < boxes.size(); ++k)
+            {
+                missed += distance(boxes[k], point) <= cell && items.count(k) == 0 ? 1 : 0;
             }
         }
-        largerThanAsked = largerThanAsked || covered.upperBound.x - covered.lowerBound.x >
-                                                 query.upperBound.x - query.lowerBound.x + 0.01f;
+        if (listing == Grid::Listing::neighbourhood)
+        {
+            EXPECT_EQ(missed, 0) << "every box within a cell of the point is listed";
+            EXPECT_LT(listed, 3000u * boxes.size() / 4) << "and the lists are not everything";
+        }
+        else
+        {
+            EXPECT_GT(missed, 0) << "a cell's own boxes do not say what lies next to it";
+        }
     }
-    EXPECT_TRUE(largerThanAsked) << "the covered box reaches to the visited cells' sides";
 }
 
 namespace
@@ -295,6 +363,206 @@ TEST(WorldGeometry, ClearanceReachesAsFarAsTheCellsItLookedAt)
             EXPECT_LE(clearance, std::max(0.0f, TwoChains::Distance(at.p) - scene.side.radius))
                 << "a lower bound at (" << at.p.x << ", " << at.p.y << ")";
         }
+    }
+}
+
+namespace
+{
+
+// Every kind of static shape: a one-sided chain along a wave, a two-sided edge, a circle, polygons on a
+// moved and turned body, and a box the particle's filter rejects.
+struct EveryShape
+{
+    b2World world{b2Vec2(0.0f, -10.0f)};
+    WorldGeometry geometry;
+    ParticleSide side{0.1f, 0.0f, 0.0f, 0.0f, 0x0002, 0x0001};
+
+    EveryShape()
+    {
+        b2BodyDef def;
+        b2Body* ground = world.CreateBody(&def);
+        std::vector<b2Vec2> wave;
+        for (int i = 0; i <= 24; ++i)
+        {
+            const float x = 6.0f - 0.5f * static_cast<float>(i); // right to left: normals point up
+            wave.emplace_back(x, 0.4f * std::sin(0.8f * x));
+        }
+        b2ChainShape chain;
+        chain.CreateChain(wave.data(), static_cast<int>(wave.size()), wave.front(), wave.back());
+        ground->CreateFixture(&chain, 0.0f);
+        b2EdgeShape edge;
+        edge.SetTwoSided(b2Vec2(-3.0f, 2.0f), b2Vec2(-1.0f, 2.6f));
+        ground->CreateFixture(&edge, 0.0f);
+        b2CircleShape circle;
+        circle.m_p.Set(2.0f, 2.0f);
+        circle.m_radius = 0.4f;
+        ground->CreateFixture(&circle, 0.0f);
+        b2PolygonShape rejected;
+        rejected.SetAsBox(0.5f, 0.5f, b2Vec2(-4.5f, 3.0f), 0.0f);
+        b2FixtureDef rejectedDef;
+        rejectedDef.shape = &rejected;
+        rejectedDef.filter.categoryBits = 0x0004;
+        ground->CreateFixture(&rejectedDef);
+
+        def.position.Set(0.5f, 3.5f);
+        def.angle = 0.4f;
+        b2Body* turned = world.CreateBody(&def);
+        b2PolygonShape box;
+        box.SetAsBox(0.6f, 0.2f);
+        turned->CreateFixture(&box, 0.0f);
+        const b2Vec2 triangle[3] = {b2Vec2(2.0f, 0.0f), b2Vec2(3.0f, 0.2f), b2Vec2(2.4f, 0.9f)};
+        b2PolygonShape wedge;
+        wedge.Set(triangle, 3);
+        turned->CreateFixture(&wedge, 0.0f);
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+    }
+
+    // The earliest touch of every static shape the filter accepts, each swept on its own.
+    bool SweepEach(const SweepInput& in, Touch& best) const
+    {
+        bool found = false;
+        for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+        {
+            const b2Transform& xf = body->GetTransform();
+            for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
+                 fixture = fixture->GetNext())
+            {
+                const b2Filter& filter = fixture->GetFilterData();
+                if ((filter.maskBits & side.categoryBits) == 0 || (filter.categoryBits & side.maskBits) == 0)
+                {
+                    continue;
+                }
+                const b2Shape* shape = fixture->GetShape();
+                if (shape->GetType() == b2Shape::e_circle)
+                {
+                    const auto* circle = static_cast<const b2CircleShape*>(shape);
+                    found = SweepCircle(in, b2Mul(xf, circle->m_p), circle->m_radius, best) || found;
+                }
+                else if (shape->GetType() == b2Shape::e_polygon)
+                {
+                    const auto* polygon = static_cast<const b2PolygonShape*>(shape);
+                    std::vector<b2Vec2> vertices, normals;
+                    for (int i = 0; i < polygon->m_count; ++i)
+                    {
+                        vertices.push_back(b2Mul(xf, polygon->m_vertices[i]));
+                        normals.push_back(b2Mul(xf.q, polygon->m_normals[i]));
+                    }
+                    found =
+                        SweepPolygon(in, vertices.data(), normals.data(), polygon->m_count, best) || found;
+                }
+                else
+                {
+                    for (int child = 0; child < shape->GetChildCount(); ++child)
+                    {
+                        b2EdgeShape edge;
+                        if (shape->GetType() == b2Shape::e_edge)
+                        {
+                            edge = *static_cast<const b2EdgeShape*>(shape);
+                        }
+                        else
+                        {
+                            static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+                        }
+                        const Segment segment = MakeSegment(b2Mul(xf, edge.m_vertex1),
+                                                            b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
+                        found = SweepSegment(in, segment, best) || found;
+                    }
+                }
+            }
+        }
+        return found;
+    }
+};
+
+} // namespace
+
+// The cache answers from one cell's list for short motions and from a query of cells for long ones, and
+// skips primitives out of the disc's reach: the touches must be those of sweeping every shape, and the
+// clearance a distance the disc can really move in any direction without touching anything.
+TEST(WorldGeometry, SweepsFindWhatSweepingEveryShapeFinds)
+{
+    EveryShape scene;
+    ASSERT_GE(scene.geometry.StaticPrimitives(), 28u);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> x(-7.5f, 7.5f);
+    std::uniform_real_distribution<float> y(-1.5f, 5.5f);
+    std::uniform_real_distribution<float> turn(0.0f, 2.0f * b2_pi);
+    std::uniform_real_distribution<float> length(0.0f, 1.5f);
+    int touches = 0;
+    int overlaps = 0;
+    int clearancesChecked = 0;
+    for (int probe = 0; probe < 20000; ++probe)
+    {
+        const float angle = turn(random);
+        const SweepInput in{b2Vec2(x(random), y(random)),
+                            length(random) * b2Vec2(std::cos(angle), std::sin(angle)), scene.side.radius};
+        SweepResult result;
+        float clearance = -1.0f;
+        const bool found = scene.geometry.SweepStatic(in, scene.side, result, 0.05f, &clearance);
+        Touch expected;
+        ASSERT_EQ(found, scene.SweepEach(in, expected)) << "probe " << probe;
+        if (found)
+        {
+            ++touches;
+            overlaps += expected.t == 0.0f ? 1 : 0;
+            ASSERT_EQ(result.touch.t, expected.t) << "probe " << probe;
+            EXPECT_NEAR(result.touch.position.x, expected.position.x, 1e-5f) << "probe " << probe;
+            EXPECT_NEAR(result.touch.position.y, expected.position.y, 1e-5f) << "probe " << probe;
+            EXPECT_EQ(clearance, 0.0f);
+            continue;
+        }
+        // Moving on from the end by the clearance, in any direction, touches nothing.
+        ASSERT_GE(clearance, 0.0f);
+        for (int k = 0; k < 16 && clearance > 0.0f; ++k)
+        {
+            const float direction = static_cast<float>(k) * b2_pi / 8.0f;
+            const SweepInput on{in.p + in.d, clearance * b2Vec2(std::cos(direction), std::sin(direction)),
+                                scene.side.radius};
+            Touch none;
+            EXPECT_FALSE(scene.SweepEach(on, none)) << "probe " << probe << ", direction " << k;
+        }
+        clearancesChecked += clearance > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(touches, 1000);
+    EXPECT_GT(overlaps, 100);
+    EXPECT_GT(clearancesChecked, 10000);
+}
+
+// Box2D reuses a destroyed fixture's memory for the next one, so a chain rebuilt with one vertex moved
+// can come back at the same addresses: only the children's boxes tell it apart. Each of them counts.
+TEST(WorldGeometry, StaticCacheSeesAChangeInAnyChildOfAChain)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    b2BodyDef def;
+    b2Body* ground = world.CreateBody(&def);
+    std::vector<b2Vec2> points;
+    for (int i = 0; i <= 10; ++i)
+    {
+        points.emplace_back(10.0f - 2.0f * static_cast<float>(i), 0.0f);
+    }
+    auto replaceChain = [&]()
+    {
+        if (ground->GetFixtureList() != nullptr)
+        {
+            ground->DestroyFixture(ground->GetFixtureList());
+        }
+        b2ChainShape chain;
+        chain.CreateChain(points.data(), static_cast<int>(points.size()), points.front(), points.back());
+        ground->CreateFixture(&chain, 0.0f);
+    };
+    replaceChain();
+    WorldGeometry geometry;
+    geometry.Scan(world, nullptr, 1.0f / 60.0f);
+    std::uint64_t builds = geometry.StaticBuilds();
+    for (const int moved : {0, 4, 9, 10}) // the first child, middle ones, the last (after the fourth lanes)
+    {
+        points[static_cast<std::size_t>(moved)].y += 0.01f;
+        replaceChain();
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+        EXPECT_EQ(geometry.StaticBuilds(), builds + 1) << "vertex " << moved << " moved";
+        builds = geometry.StaticBuilds();
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+        EXPECT_EQ(geometry.StaticBuilds(), builds) << "nothing changed since";
     }
 }
 
