@@ -54,17 +54,13 @@ double Milliseconds(std::chrono::steady_clock::duration duration)
     return std::chrono::duration<double, std::milli>(duration).count();
 }
 
-struct Timings
+// The least and the median of `values` (sorted in place); 0 when empty.
+void Summarize(std::vector<double>& values, double& minOut, double& medianOut)
 {
-    std::vector<double> step, update;
-
-    void Summarize(double& minOut, double& medianOut, std::vector<double>& values) const
-    {
-        std::sort(values.begin(), values.end());
-        minOut = values.empty() ? 0.0 : values.front();
-        medianOut = values.empty() ? 0.0 : values[values.size() / 2];
-    }
-};
+    std::sort(values.begin(), values.end());
+    minOut = values.empty() ? 0.0 : values.front();
+    medianOut = values.empty() ? 0.0 : values[values.size() / 2];
+}
 
 } // namespace
 
@@ -169,48 +165,58 @@ ParticleBenchResult MeasureParticles(std::uint32_t count, ParticleBackend backen
     result.count = count;
     result.steps = steps;
 
-    auto run = [&](bool plain, double& minOut, double& medianOut, double* updateMin, double* updateMedian)
+    ParticleBenchScene scene;
+    const double heapBefore = HeapInUse();
+    scene.Populate(count, backend, options);
+    for (std::uint32_t i = 0; i < warmup; ++i)
     {
-        ParticleBenchScene scene;
-        const double heapBefore = HeapInUse();
-        scene.Populate(count, backend, options);
-        for (std::uint32_t i = 0; i < warmup; ++i)
-        {
-            plain ? scene.StepPlain() : scene.Step();
-        }
-        if (!plain)
-        {
-            result.bytesPerParticle =
-                (HeapInUse() - heapBefore) / std::max<std::uint32_t>(1, scene.Particles().Count());
-        }
-        Timings timings;
-        for (std::uint32_t i = 0; i < steps; ++i)
-        {
-            const Clock::time_point start = Clock::now();
-            scene.StepWorld();
-            const Clock::time_point worldDone = Clock::now();
-            plain ? scene.IntegrateParticles() : scene.StepParticles();
-            const Clock::time_point updateDone = Clock::now();
-            scene.Respawn();
-            const Clock::time_point end = Clock::now();
-            timings.step.push_back(Milliseconds(end - start));
-            timings.update.push_back(Milliseconds(updateDone - worldDone));
-        }
-        (plain ? result.plainThreads : result.threads) = scene.Particles().ThreadsUsed();
-        if (updateMin != nullptr)
-        {
-            timings.Summarize(minOut, medianOut, timings.step);
-            timings.Summarize(*updateMin, *updateMedian, timings.update);
-        }
-        else
-        {
-            timings.Summarize(minOut, medianOut, timings.update);
-        }
-    };
-    run(false, result.msMin, result.msMedian, &result.updateMsMin, &result.updateMsMedian);
+        scene.Step();
+    }
+    result.bytesPerParticle =
+        (HeapInUse() - heapBefore) / std::max<std::uint32_t>(1, scene.Particles().Count());
+
+    // For the pool, a second scene with the same seed moves by the plain integration. The two are
+    // stepped in turn, so that the machine's speed drifting (by up to half on a shared machine) between
+    // two runs cannot skew the ratio of their timings.
+    std::unique_ptr<ParticleBenchScene> plain;
     if (backend == ParticleBackend::pool)
     {
-        run(true, result.plainMsMin, result.plainMsMedian, nullptr, nullptr);
+        plain = std::make_unique<ParticleBenchScene>();
+        plain->Populate(count, backend, options);
+        for (std::uint32_t i = 0; i < warmup; ++i)
+        {
+            plain->StepPlain();
+        }
+    }
+
+    std::vector<double> step, update, plainUpdate;
+    for (std::uint32_t i = 0; i < steps; ++i)
+    {
+        const Clock::time_point start = Clock::now();
+        scene.StepWorld();
+        const Clock::time_point worldDone = Clock::now();
+        scene.StepParticles();
+        const Clock::time_point updateDone = Clock::now();
+        scene.Respawn();
+        const Clock::time_point end = Clock::now();
+        step.push_back(Milliseconds(end - start));
+        update.push_back(Milliseconds(updateDone - worldDone));
+        if (plain)
+        {
+            plain->StepWorld();
+            const Clock::time_point plainStart = Clock::now();
+            plain->IntegrateParticles();
+            plainUpdate.push_back(Milliseconds(Clock::now() - plainStart));
+            plain->Respawn();
+        }
+    }
+    result.threads = scene.Particles().ThreadsUsed();
+    Summarize(step, result.msMin, result.msMedian);
+    Summarize(update, result.updateMsMin, result.updateMsMedian);
+    if (plain)
+    {
+        result.plainThreads = plain->Particles().ThreadsUsed();
+        Summarize(plainUpdate, result.plainMsMin, result.plainMsMedian);
     }
     return result;
 }

@@ -77,7 +77,8 @@ struct ParticleBenchResult
 };
 
 /// Builds the scene, warms it up for `warmup` steps, then times `steps` steps. For the pool, also times
-/// the plain integration in a second scene with the same seed.
+/// the plain integration in a second scene with the same seed, warmed up the same way and stepped in
+/// turn with the first (one step of each), so that both timings see the machine at the same speed.
 ParticleBenchResult MeasureParticles(std::uint32_t count, ParticleBackend backend, std::uint32_t steps,
                                      std::uint32_t warmup, const ParticleSystemOptions& options = {});
 
