@@ -6,8 +6,9 @@
 // Each iteration is one step of the scene (world.Step, particle step, respawn); the counter
 // ns_per_particle divides by the particle count so sizes compare directly.
 //
-// StaticSweep times the static cache alone (src/particles/world_geometry.h): one disc sweep of the
-// kind a colliding step makes, against the benchmark scene's chain, per iteration.
+// StaticSweep and StaticScan time the static cache alone (src/particles/world_geometry.h): one disc sweep
+// of the kind a colliding step makes against the benchmark scene's chain, and one scan of the world for
+// changes, per iteration.
 #include "particles/world_geometry.h"
 #include "scenes/particle_bench.h"
 
@@ -110,8 +111,22 @@ void StaticSweep(benchmark::State& state)
     state.counters["motions"] = static_cast<double>(motions.size());
 }
 
+// The walk of the world every colliding step makes to notice changed static geometry (nothing changes
+// here, so nothing is rebuilt): the benchmark scene's 256-segment chain.
+void StaticScan(benchmark::State& state)
+{
+    ParticleBenchScene scene;
+    cfx::particles::WorldGeometry geometry;
+    for (auto _ : state)
+    {
+        geometry.Scan(scene.World(), nullptr, 1.0f / cfx::bench::kBenchHz);
+    }
+    state.counters["builds"] = static_cast<double>(geometry.StaticBuilds());
+}
+
 } // namespace
 
+BENCHMARK(StaticScan);
 BENCHMARK(StaticSweep);
 BENCHMARK(Pool)->Arg(1000)->Arg(10000)->Arg(50000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(PoolOneThread)->Arg(1000)->Arg(10000)->Arg(50000)->Arg(100000)->Unit(benchmark::kMillisecond);
