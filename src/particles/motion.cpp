@@ -42,11 +42,6 @@ constexpr std::uint32_t kBlock = 64;
 constexpr float kResting = -std::numeric_limits<float>::infinity();
 constexpr float kNothingToTouch = std::numeric_limits<float>::infinity();
 
-// How far ahead the clearance of a particle near geometry is measured, in steps of its current motion,
-// and at least and at most (m): far enough to skip several steps, near enough to keep the query small.
-constexpr float kReachSteps = 4.0f;
-constexpr float kMinReach = 0.05f;
-
 // `mask` all ones: a, else b; without a branch.
 float Select(std::uint32_t mask, float a, float b)
 {
@@ -97,7 +92,6 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, boo
     }
     else if (geometry.HasStatic())
     {
-        const float reach = std::max(kMinReach, kReachSteps * StepLengthBound(dt * velocity));
         float remaining = dt;
         for (int sweep = 0; sweep < kStaticSweeps; ++sweep)
         {
@@ -108,7 +102,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, boo
             }
             SweepResult hit;
             // The first sweep also measures the clearance, should the particle fly freely.
-            if (!geometry.SweepStatic(in, type.side, hit, reach, sweep == 0 ? &clearance : nullptr))
+            if (!geometry.SweepStatic(in, type.side, hit, sweep == 0 ? &clearance : nullptr))
             {
                 position += in.d;
                 break;

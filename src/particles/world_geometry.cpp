@@ -98,6 +98,12 @@ void AddStaticBody(Signature& signature, const b2Body& body)
 
 constexpr std::uint32_t kRecent = 8;
 
+// How far around the end of a long motion its clearance is measured, in lengths of the motion (a step's,
+// for a particle's first sweep), and at least (m): far enough to skip several steps, near enough to keep
+// the query small.
+constexpr float kReachSteps = 4.0f;
+constexpr float kMinReach = 0.05f;
+
 // Taken off every clearance (m), so that rounding in the distances can never let a particle that flies
 // freely on its clearance end up touching a shape that a sweep would have met.
 constexpr float kClearanceSlop = 1.0e-3f;
@@ -335,7 +341,7 @@ private:
 };
 
 bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
-                                float reach, float* clearance) const
+                                float* clearance) const
 {
     const b2Vec2 end = in.p + in.d;
     const float r = in.radius;
@@ -345,7 +351,8 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
                                    std::max(bounds.lowerBound.y - end.y, end.y - bounds.upperBound.y));
     // The disc's path lies within |d| + r of `end`: a primitive farther than that is not swept. The slop
     // covers rounding in the distances, so that the skip never changes a result.
-    Nearest nearest(end, std::sqrt(b2Dot(in.d, in.d)) + r + kClearanceSlop);
+    const float length = std::sqrt(b2Dot(in.d, in.d));
+    Nearest nearest(end, length + r + kClearanceSlop);
     bool found = false;
     auto test = [&](std::uint32_t index)
     {
@@ -400,6 +407,7 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
     }
 
     b2AABB query = PathBox(in.p, end, r);
+    const float reach = std::max(kMinReach, kReachSteps * length);
     const bool measure = clearance != nullptr && outside - r < reach;
     if (measure)
     {

@@ -104,9 +104,10 @@ public:
     /// touch a static fixture the filter accepts. A motion shorter than a grid cell less the radius (most
     /// of them) is answered from the list of the cell `end` lies in, which holds everything within a cell
     /// of it: the clearance looks a cell around. A longer one queries the cells its path covers and
-    /// looks at least `reach` (m, > 0) around `end`, as far as the cells visited reach. Beyond the static
-    /// geometry's bounds it is at least the distance to them. 0 when something was touched.
-    bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result, float reach = 0.0f,
+    /// looks at least 4 times the motion's length (at least 5 cm) around `end`, as far as the cells
+    /// visited reach. Beyond the static geometry's bounds it is at least the distance to them. 0 when
+    /// something was touched.
+    bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
                      float* clearance = nullptr) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
     /// is at `end` (both world, end of step frame for `end`).
