@@ -13,6 +13,7 @@
 #include "cli_common.h"
 #include "contactfx/error.h"
 #include "contactfx/presets.h"
+#include "harness/scenes.h"
 #include "scenes/demo_bench.h"
 #include "scenes/particle_bench.h"
 
@@ -134,7 +135,7 @@ int RunParticles(const ParticleBenchOptions& options)
 
 int RunDemo(const DemoBenchOptions& options)
 {
-    const bench::DemoBenchResult result = bench::MeasureDemo(ScenesDir() / "physics_driven_particles.json",
+    const bench::DemoBenchResult result = bench::MeasureDemo(BundledScenesDir() / "physics_driven_particles.json",
                                                              DefaultPreset(), 60.0f, options.steps);
     if (options.json)
     {

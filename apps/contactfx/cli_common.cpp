@@ -64,15 +64,6 @@ EffectsConfig SelectConfig(const RunOptions& options)
     return options.preset == "tutorial" ? TutorialPreset() : DefaultPreset();
 }
 
-std::filesystem::path ScenesDir()
-{
-    if (const char* fromEnvironment = std::getenv("CONTACTFX_SCENES"))
-    {
-        return fromEnvironment;
-    }
-    return CONTACTFX_SCENES_DIR;
-}
-
 int Guarded(const std::function<int()>& body)
 {
     try

@@ -43,9 +43,6 @@ void CheckRunOptions(const RunOptions& options);
 /// The effects configuration the options select: --effects FILE, else --preset NAME.
 EffectsConfig SelectConfig(const RunOptions& options);
 
-/// The folder of the bundled scenes: $CONTACTFX_SCENES, else the source tree's scenes/.
-std::filesystem::path ScenesDir();
-
 /// Runs `body`, turning exceptions into one error line per problem on stderr and exit code 1.
 int Guarded(const std::function<int()>& body);
 

@@ -11,7 +11,8 @@
 #include "contactfx/render/frame.h"
 #include "contactfx/render/frame_output.h"
 #include "contactfx/scene/text_file.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/scenes.h"
+#include "harness/simulation.h"
 #include "progress.h"
 
 #include <box2d/b2_body.h>
@@ -118,7 +119,7 @@ int Render(RenderOptions options)
     std::span<const DriveSegment> drive;
     if (options.demo)
     {
-        options.run.scene = (ScenesDir() / "physics_driven_particles.json").string();
+        options.run.scene = (BundledScenesDir() / "physics_driven_particles.json").string();
         drive = TutorialDrive();
     }
     SimulationDef def;

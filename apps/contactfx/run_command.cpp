@@ -2,8 +2,8 @@
 
 #include "cli_common.h"
 #include "contactfx/scene/text_file.h"
-#include "contactfx/sim/scenes.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/scenes.h"
+#include "harness/simulation.h"
 #include "plot_option.h"
 
 #include <cmath>
@@ -104,7 +104,7 @@ void RegisterRunCommands(CLI::App& app, int& result)
                 [&]
                 {
                     const SceneEntry& tutorial = *FindScene("tutorial"); // the registry's (scenes.h)
-                    demoOptions->scene = (ScenesDir() / tutorial.file).string();
+                    demoOptions->scene = (BundledScenesDir() / tutorial.file).string();
                     return Simulate(*demoOptions, tutorial.drive, "contactfx demo", *demoPlot);
                 });
         });

@@ -14,7 +14,7 @@
 #include "contactfx/scene/effects_json.h"
 #include "contactfx/scene/rube.h"
 #include "contactfx/scene/text_file.h"
-#include "contactfx/sim/scene_materials.h"
+#include "contactfx/scene/scene_materials.h"
 
 #include <iostream>
 #include <memory>

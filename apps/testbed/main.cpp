@@ -5,7 +5,7 @@
 // Exit code 0 on success, 1 on any error (one line on stderr naming the flag or file).
 #include "app.h"
 #include "contactfx/error.h"
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 #include "options.h"
 
 #include <CLI/CLI.hpp>

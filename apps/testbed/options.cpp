@@ -1,7 +1,7 @@
 #include "options.h"
 
 #include "contactfx/error.h"
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 
 #include <filesystem>
 #include <unistd.h>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "contactfx/render/camera.h"
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 #include "event_log.h"
 #include "mouse_drag.h"
 

@@ -3,8 +3,8 @@
 
 #include "contactfx/effects.h"
 #include "contactfx/scene/rube.h"
-#include "contactfx/sim/car.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/car.h"
+#include "harness/simulation.h"
 
 #include <algorithm>
 #include <box2d/b2_world.h>

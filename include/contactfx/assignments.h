@@ -5,7 +5,7 @@
 // or fixture name (a glob), by body type, by a friction range and by a body mass range, much as the
 // tutorial guessed its materials from fixture properties. Rules are tried in order and the first match
 // wins; a fixture no rule matches has no material. A fixture's own `material` property always takes
-// precedence (contactfx_sim applies the rules only to fixtures without one).
+// precedence (contactfx_scene applies the rules only to fixtures without one).
 //
 // Everything here is a pure function of plain values: no Box2D object is read except through FactsOf.
 #pragma once

@@ -1,6 +1,8 @@
 // Running the contactfx binary from tests.
 #pragma once
 
+#include "rube_samples_dir.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -58,9 +60,11 @@ inline std::string Scene(const char* name)
     return std::string(CONTACTFX_SOURCE_DIR) + "/scenes/" + name;
 }
 
+/// A real RUBE scene of ../shared/rube-samples; tests that use one start with
+/// CONTACTFX_REQUIRE_RUBE_SAMPLES().
 inline std::string Sample(const char* name)
 {
-    return std::string(CONTACTFX_SHARED_DIR) + "/rube-samples/" + name;
+    return (RubeSamplesDir() / name).string();
 }
 
 /// A file's bytes ("" when it cannot be read).

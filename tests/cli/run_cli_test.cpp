@@ -78,6 +78,7 @@ TEST(CliRun, TutorialPresetKeepsAtMostHundredParticles)
 
 TEST(CliRun, RunsAnyRubeSceneWithEffectsConfig)
 {
+    CONTACTFX_REQUIRE_RUBE_SAMPLES();
     std::filesystem::path dir = ScratchDir("any");
     CliResult result = RunCli("run " + Sample("car.json") + " --seconds 1 --effects " +
                               Scene("default.effects.json") + " --stats " + (dir / "s.json").string());

@@ -128,24 +128,9 @@ std::vector<BadFile> BadFiles()
     };
 }
 
-} // namespace
-
-TEST(CliValidate, ShippedAndSampleFilesAreValid)
+/// Validates `files` in one run, as text and as JSON: every one is ok and of the right kind.
+void ExpectAllValid(const std::vector<std::string>& files)
 {
-    std::vector<std::string> files;
-    for (const auto& entry :
-         std::filesystem::directory_iterator(std::string(CONTACTFX_SOURCE_DIR) + "/scenes"))
-    {
-        files.push_back(entry.path().string());
-    }
-    for (const auto& entry :
-         std::filesystem::directory_iterator(std::string(CONTACTFX_SHARED_DIR) + "/rube-samples"))
-    {
-        if (entry.path().extension() == ".json")
-        {
-            files.push_back(entry.path().string());
-        }
-    }
     std::string args = "validate";
     for (const std::string& file : files)
     {
@@ -186,6 +171,32 @@ TEST(CliValidate, ShippedAndSampleFilesAreValid)
         EXPECT_EQ(report["joints"], scene.value("joint", nlohmann::json::array()).size()) << file;
         EXPECT_EQ(report["images"], scene.value("image", nlohmann::json::array()).size()) << file;
     }
+}
+
+std::vector<std::string> JsonFilesIn(const std::filesystem::path& folder)
+{
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+    {
+        if (entry.path().extension() == ".json")
+        {
+            files.push_back(entry.path().string());
+        }
+    }
+    return files;
+}
+
+} // namespace
+
+TEST(CliValidate, ShippedFilesAreValid)
+{
+    ExpectAllValid(JsonFilesIn(std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes"));
+}
+
+TEST(CliValidate, RealRubeSamplesAreValid)
+{
+    CONTACTFX_REQUIRE_RUBE_SAMPLES();
+    ExpectAllValid(JsonFilesIn(test::RubeSamplesDir()));
 }
 
 TEST(CliValidate, EveryProblemOfEveryFileIsReportedAndNoFileIsTouched)

@@ -28,7 +28,7 @@ std::string Polygon(const std::string& xs, const std::string& ys)
 
 TEST(RubeErrors, TruncatedJsonHasLineAndColumn)
 {
-    const std::string text = test::ReadText(test::SharedDir() / "rube-samples" / "documentA.json");
+    const std::string text = test::ReadText(test::ProjectScene("grinder.json"));
     const std::string truncated = text.substr(0, text.size() / 2);
     auto diagnostics = LoadErrors(truncated);
     ASSERT_EQ(diagnostics.size(), 1u);

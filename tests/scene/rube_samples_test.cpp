@@ -229,10 +229,33 @@ TEST_P(RubeSample, ValidatesWithoutProblemsAndCounts)
 INSTANTIATE_TEST_SUITE_P(SharedFiles, RubeSample, ::testing::ValuesIn(test::SampleFiles()),
                          test::SampleTestName);
 
-TEST(RubeSamples, SpecificValues)
+TEST(RubeSamples, SharedFolder)
 {
-    // Facts read off the files by eye, as a second check of the generic comparison above.
-    Scene car = LoadRubeFile(test::SharedDir() / "rube-samples" / "car.json");
+    CONTACTFX_REQUIRE_RUBE_SAMPLES();
+    // The samples that are there took part in the parameterised tests above.
+    const std::vector<std::filesystem::path> files = test::SampleFiles();
+    EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::filesystem::path& file)
+                            { return file.parent_path() == test::RubeSamplesDir(); }));
+}
+
+TEST(RubeSamples, ProjectScenesSpecificValues)
+{
+    // Facts read off the file by eye, as a second check of the generic comparison above.
+    Scene main = LoadRubeFile(test::ProjectScene("physics_driven_particles.json"));
+    const SceneFixture* dirt = main.FindFixture("ground_dirt_0");
+    ASSERT_NE(dirt, nullptr);
+    ASSERT_NE(dirt->properties.FindString("material"), nullptr);
+    EXPECT_EQ(*dirt->properties.FindString("material"), "dirt");
+    EXPECT_EQ(dirt->fixture->GetFriction(), 0.25f);
+    const SceneJoint* suspension = main.FindJoint("suspension_front");
+    ASSERT_NE(suspension, nullptr);
+    EXPECT_EQ(suspension->joint->GetType(), e_wheelJoint);
+}
+
+TEST(RubeSamples, CarSampleSpecificValues)
+{
+    CONTACTFX_REQUIRE_RUBE_SAMPLES();
+    Scene car = LoadRubeFile(test::RubeSamplesDir() / "car.json");
     const SceneJoint* spring = car.FindJoint("antennaspring2");
     ASSERT_NE(spring, nullptr);
     EXPECT_EQ(spring->joint->GetType(), e_distanceJoint);
@@ -244,16 +267,6 @@ TEST(RubeSamples, SpecificValues)
     ASSERT_EQ(car.images[2].uvCoords.size(), 4u);
     EXPECT_EQ(car.images[2].uvCoords[2], b2Vec2(1.0f, 1.0f));
     EXPECT_EQ(car.images[2].glDrawElements, (std::vector<int>{0, 1, 2, 2, 3, 0}));
-
-    Scene main = LoadRubeFile(test::SharedDir() / "scenes" / "physics_driven_particles.json");
-    const SceneFixture* dirt = main.FindFixture("ground_dirt_0");
-    ASSERT_NE(dirt, nullptr);
-    ASSERT_NE(dirt->properties.FindString("material"), nullptr);
-    EXPECT_EQ(*dirt->properties.FindString("material"), "dirt");
-    EXPECT_EQ(dirt->fixture->GetFriction(), 0.25f);
-    const SceneJoint* suspension = main.FindJoint("suspension_front");
-    ASSERT_NE(suspension, nullptr);
-    EXPECT_EQ(suspension->joint->GetType(), e_wheelJoint);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contactfx/scene/rube.h"
+#include "rube_samples_dir.h"
 
 #include <algorithm>
 #include <bit>
@@ -19,24 +20,36 @@
 namespace cfx::test
 {
 
-inline std::filesystem::path SharedDir()
+/// The project's own scenes (scenes/*.json, effects configs left out).
+inline std::filesystem::path ProjectScene(const char* name)
 {
-    return std::filesystem::path(CONTACTFX_SHARED_DIR);
+    return std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes" / name;
 }
 
-/// Every RUBE sample the project has: rube-samples/*.json and the main scene.
+/// Every RUBE scene the tests can read: the project's own scenes, then ../shared/rube-samples/*.json
+/// when that folder exists (see rube_samples_dir.h; RubeSamples.SharedFolder says when it does not).
 inline std::vector<std::filesystem::path> SampleFiles()
 {
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(SharedDir() / "rube-samples"))
+    auto addJsonFiles = [&files](const std::filesystem::path& folder)
     {
-        if (entry.path().extension() == ".json")
+        std::vector<std::filesystem::path> found;
+        for (const auto& entry : std::filesystem::directory_iterator(folder))
         {
-            files.push_back(entry.path());
+            const std::string name = entry.path().filename().string();
+            if (entry.path().extension() == ".json" && !name.ends_with(".effects.json"))
+            {
+                found.push_back(entry.path());
+            }
         }
+        std::sort(found.begin(), found.end());
+        files.insert(files.end(), found.begin(), found.end());
+    };
+    addJsonFiles(std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes");
+    if (HaveRubeSamples())
+    {
+        addJsonFiles(RubeSamplesDir());
     }
-    std::sort(files.begin(), files.end());
-    files.push_back(SharedDir() / "scenes" / "physics_driven_particles.json");
     return files;
 }
 

@@ -1,7 +1,7 @@
 // Scene fixtures -> materials: the `material` property first, then the config's assignment rules, so that
 // the tutorial scene without a single `material` property gets exactly the tutorial's materials.
 #include "contactfx/scene/text_file.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/simulation.h"
 #include "scene/rube_test_util.h"
 
 #include <gtest/gtest.h>
@@ -171,9 +171,27 @@ TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
     }
 }
 
+TEST(SceneMaterials, APlainRubeSceneGetsMaterialsFromTheDefaultAssignments)
+{
+    // The tutorial scene with every custom property removed, as RUBE writes a scene made without us.
+    nlohmann::json json = test::ReadJson(test::ProjectScene("physics_driven_particles.json"));
+    for (nlohmann::json& body : json["body"])
+    {
+        for (nlohmann::json& fixture : body["fixture"])
+        {
+            fixture.erase("customProperties");
+        }
+    }
+    const Scene plain = LoadRubeString(json.dump(), "plain.json");
+    std::vector<std::string> names = MaterialNames(plain, DefaultPreset());
+    EXPECT_GT(std::count_if(names.begin(), names.end(), [](const std::string& name) { return name != "none"; }),
+              0);
+}
+
 TEST(SceneMaterials, PlainRubeSamplesGetMaterialsFromTheDefaultAssignments)
 {
-    const Scene car = LoadRubeFile(test::SharedDir() / "rube-samples" / "car.json");
+    CONTACTFX_REQUIRE_RUBE_SAMPLES();
+    const Scene car = LoadRubeFile(test::RubeSamplesDir() / "car.json");
     int assigned = 0;
     for (const std::string& name : MaterialNames(car, DefaultPreset()))
     {

@@ -1,6 +1,6 @@
 // The tutorial scene end to end, through the same Simulation the CLI uses.
 #include "contactfx/scene/text_file.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/simulation.h"
 
 #include <fstream>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Simulation::ReplaceEffects (the testbed's live edits) and the step times it reports.
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 
 #include <box2d/b2_body.h>
 #include <gtest/gtest.h>

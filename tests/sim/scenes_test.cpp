@@ -1,6 +1,6 @@
 // The scene registry: every registered scene loads, gives each fixture its material, and makes the
 // particle types it promises when simulated headless, the same way every time.
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 
 #include <box2d/b2_body.h>
 #include <cmath>

@@ -9,7 +9,7 @@
 // whatever the shape or the background under it.
 #include "contactfx/render/cairo_renderer.h"
 #include "contactfx/render/palette.h"
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 #include "layout.h"
 #include "testbed/testbed_support.h"
 

@@ -1,4 +1,4 @@
-#include "contactfx/sim/car.h"
+#include "harness/car.h"
 
 #include "contactfx/scene/rube.h"
 

@@ -1,4 +1,4 @@
-// contactfx_sim: the tutorial's car and its controls.
+// contactfx_harness (the demo harness, not installed): the tutorial's car and its controls.
 //
 // The tutorial scene has a body "car" with two wheel joints. Keys: a / d drive the rear wheel's motor
 // at +/-1600 degrees per second (the front one too with four-wheel drive), s brakes (both motors on at

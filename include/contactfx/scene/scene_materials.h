@@ -1,4 +1,4 @@
-// contactfx_sim: which material each fixture of a RUBE scene has.
+// contactfx_scene: which material each fixture of a RUBE scene has.
 //
 // A fixture's own custom property `material` (a string naming a material of the effects config) decides
 // first; a fixture without one gets the material of the first assignment rule of the config that matches

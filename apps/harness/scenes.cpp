@@ -1,6 +1,6 @@
 // The registry of named scenes. Adding a scene: its RUBE file in scenes/ (fixtures carry `material`),
 // an entry below, and the particle types it promises, which tests/sim/scenes_test.cpp then checks.
-#include "contactfx/sim/scenes.h"
+#include "harness/scenes.h"
 
 #include "contactfx/scene/effects_json.h"
 
@@ -171,7 +171,13 @@ std::filesystem::path BundledScenesDir()
     {
         return overridden;
     }
-    return CONTACTFX_SCENES_DIR;
+    std::error_code error;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error)
+    {
+        return std::filesystem::path(CONTACTFX_SCENES_FROM_BIN);
+    }
+    return (program.parent_path() / CONTACTFX_SCENES_FROM_BIN).lexically_normal();
 }
 
 SimulationDef SceneSimulationDef(const SceneEntry& entry, const std::filesystem::path& scenesDir)

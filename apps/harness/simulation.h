@@ -1,4 +1,4 @@
-// contactfx_sim: a scene, its effects and its driver, stepped together.
+// contactfx_harness (the demo harness, not installed): a scene, its effects and its driver, stepped together.
 //
 // What the CLI, the tests, the benchmarks and the testbed all do: load a RUBE scene, give its fixtures
 // their materials (their custom property `material`, else the config's assignments), attach an Effects
@@ -9,8 +9,8 @@
 #include "contactfx/effects.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/rube.h"
-#include "contactfx/sim/car.h"
-#include "contactfx/sim/scene_materials.h"
+#include "harness/car.h"
+#include "contactfx/scene/scene_materials.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// contactfx_sim: the named scenes, written once.
+// contactfx_harness (the demo harness, not installed): the named scenes, written once.
 //
 // Every front end that shows or measures a scenario (the testbed's scene list, the CLI, the tests, the
 // benchmarks) takes it from this one registry instead of repeating its file, drive and camera. A scene
@@ -8,8 +8,8 @@
 // tests/sim/scenes_test.cpp).
 #pragma once
 
-#include "contactfx/sim/car.h"
-#include "contactfx/sim/simulation.h"
+#include "harness/car.h"
+#include "harness/simulation.h"
 
 #include <box2d/b2_math.h>
 #include <filesystem>
@@ -52,8 +52,9 @@ const SceneEntry* FindScene(std::string_view name);
 /// "tutorial, grinder, ..." for help texts and error messages.
 std::string SceneNames();
 
-/// The folder of the bundled scenes: $CONTACTFX_SCENES when set and not empty, else the source tree's
-/// scenes/ this library was built from.
+/// The folder of the bundled scenes: $CONTACTFX_SCENES when set and not empty, else
+/// <folder of the running program>/../share/contactfx/scenes (where both the build tree and an installed
+/// prefix keep them). Never depends on the source tree.
 std::filesystem::path BundledScenesDir();
 
 /// How to build the simulation of `entry`: its file and drive under `scenesDir`, its effects config

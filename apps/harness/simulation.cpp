@@ -1,4 +1,4 @@
-#include "contactfx/sim/simulation.h"
+#include "harness/simulation.h"
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>

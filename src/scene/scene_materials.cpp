@@ -2,7 +2,7 @@
 //
 // Every bad property of the scene is collected before anything is thrown, so a user fixes the file in one
 // pass, and no fixture is touched unless the whole scene resolves.
-#include "contactfx/sim/scene_materials.h"
+#include "contactfx/scene/scene_materials.h"
 
 #include "contactfx/effects.h"
 
