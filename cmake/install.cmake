@@ -32,6 +32,8 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/contactfxConfigVersion.cm
 install(FILES ${PROJECT_BINARY_DIR}/contactfxConfig.cmake ${PROJECT_BINARY_DIR}/contactfxConfigVersion.cmake
   DESTINATION ${CONTACTFX_INSTALL_CMAKEDIR} COMPONENT development)
 
+file(RELATIVE_PATH PC_PREFIX_FROM_PCDIR "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/prefix")
+string(REGEX REPLACE "/$" "" PC_PREFIX_FROM_PCDIR "${PC_PREFIX_FROM_PCDIR}")
 foreach(pc contactfx contactfx-scene contactfx-render)
   configure_file(${PROJECT_SOURCE_DIR}/cmake/${pc}.pc.in ${PROJECT_BINARY_DIR}/pkgconfig/${pc}.pc @ONLY)
   install(FILES ${PROJECT_BINARY_DIR}/pkgconfig/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
@@ -39,7 +41,7 @@ foreach(pc contactfx contactfx-scene contactfx-render)
 endforeach()
 
 if(TARGET contactfx_cli)
-  install(TARGETS contactfx_cli contactfx_testbed RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  install(TARGETS contactfx_cli contactfx_testbed OPTIONAL RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
     COMPONENT programs)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CONTACTFX_INSTALL_SCENESDIR}

@@ -3,7 +3,8 @@
 # render it to a video (sparks, smoke and dirt) plus a plot of where each effect starts and stops.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh build
+# Only the command line program is built: the tests, benchmarks, testbed and examples wait for test.sh.
+bash scripts/setup.sh build --target contactfx_cli
 mkdir -p out
 ./build/bin/contactfx demo --seconds 20 --stats out/demo-stats.json --plot out/demo-plot.png
 echo "statistics: out/demo-stats.json"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what contactfx needs from Debian 12 (bookworm) and configures + builds it.
-# Usage: bash scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]   (as root, or with sudo available)
+# Usage: bash scripts/setup.sh [BUILD_DIR] [--target TARGET]... [extra cmake arguments...]
+#   (as root, or with sudo available). Without --target it builds everything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,5 +24,16 @@ fi
 
 build_dir="${1:-build}"
 shift || true
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$build_dir" -j"$(nproc)"
+targets=()
+cmake_args=()
+while [ $# -gt 0 ]; do
+  if [ "$1" = "--target" ]; then
+    targets+=(--target "$2")
+    shift 2
+  else
+    cmake_args+=("$1")
+    shift
+  fi
+done
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "${cmake_args[@]}" >/dev/null
+cmake --build "$build_dir" -j"$(nproc)" "${targets[@]}"

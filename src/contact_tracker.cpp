@@ -1,4 +1,4 @@
-#include "contactfx/contact_tracker.h"
+#include "contact_tracker.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>

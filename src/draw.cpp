@@ -28,22 +28,4 @@ void CollectSprites(const Effects& effects, std::vector<ParticleSprite>& out)
     }
 }
 
-void DrawEffects(const Effects& effects, b2Draw* shapes, ParticleDraw* particles,
-                 std::vector<ParticleSprite>& scratch)
-{
-    if (shapes != nullptr)
-    {
-        b2World& world = effects.World();
-        b2Draw* previous = nullptr;
-        world.SetDebugDraw(shapes);
-        world.DebugDraw();
-        world.SetDebugDraw(previous);
-    }
-    if (particles != nullptr)
-    {
-        CollectSprites(effects, scratch);
-        particles->DrawParticles(scratch);
-    }
-}
-
 } // namespace cfx

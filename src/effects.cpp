@@ -1,6 +1,9 @@
 #include "contactfx/effects.h"
 
+#include "contact_tracker.h"
+#include "effects_access.h"
 #include "emitter.h"
+#include "fixture_materials.h"
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
@@ -33,10 +36,8 @@ RuleTable BuildRuleTable(const EffectsConfig& config)
     return table;
 }
 
-} // namespace
-
 // Forgets fixtures destroyed with their body, then forwards to the application's listener.
-class Effects::Destruction final : public b2DestructionListener
+class Destruction final : public b2DestructionListener
 {
 public:
     Destruction(FixtureMaterials& materials, ContactTracker& tracker, b2DestructionListener* application)
@@ -71,57 +72,85 @@ public:
     b2DestructionListener* forward;
 };
 
+} // namespace
+
+// What Effects keeps out of its public header. Members are declared in the order they depend on each
+// other: the tracker reads the materials, the destruction listener edits both.
+struct Effects::Internals
+{
+    Internals(const RuleTable& rules, const EffectsConfig& config, const EffectsDef& def)
+        : tracker(rules, materials), destruction(materials, tracker, def.destructionListener),
+          emitter(config, def.seed)
+    {
+        tracker.SetForward(def.contactListener);
+    }
+
+    FixtureMaterials materials;
+    ContactTracker tracker;
+    Destruction destruction;
+    detail::Emitter emitter;
+};
+
 Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
-      m_tracker(m_rules, m_materials), m_particles(world, m_config.particleTypes, m_config.budget),
-      m_destruction(std::make_unique<Destruction>(m_materials, m_tracker, def.destructionListener)),
-      m_emitter(std::make_unique<detail::Emitter>(m_config, def.seed)), m_eventListener(def.eventListener)
+      m_particles(world, m_config.particleTypes, m_config.budget),
+      m_internals(std::make_unique<Internals>(m_rules, m_config, def)), m_eventListener(def.eventListener)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});
-    m_tracker.SetForward(def.contactListener);
-    m_world.SetContactListener(&m_tracker);
-    m_world.SetDestructionListener(m_destruction.get());
+    m_world.SetContactListener(&m_internals->tracker);
+    m_world.SetDestructionListener(&m_internals->destruction);
 }
 
 Effects::~Effects()
 {
-    m_world.SetContactListener(m_tracker.Forward());
-    m_world.SetDestructionListener(m_destruction->forward);
+    m_world.SetContactListener(m_internals->tracker.Forward());
+    m_world.SetDestructionListener(m_internals->destruction.forward);
 }
 
 void Effects::SetMaterial(b2Fixture* fixture, MaterialId material)
 {
-    m_materials.Set(fixture, material);
+    m_internals->materials.Set(fixture, material);
+}
+
+MaterialId Effects::Material(const b2Fixture* fixture) const
+{
+    return m_internals->materials.Get(fixture);
+}
+
+void Effects::SetContactListener(b2ContactListener* listener)
+{
+    m_internals->tracker.SetForward(listener);
 }
 
 void Effects::SetMaterial(b2Body* body, MaterialId material)
 {
     for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
     {
-        m_materials.Set(fixture, material);
+        m_internals->materials.Set(fixture, material);
     }
 }
 
 void Effects::ForgetFixture(b2Fixture* fixture)
 {
-    m_tracker.ForgetFixture(fixture);
-    m_materials.Erase(fixture);
+    m_internals->tracker.ForgetFixture(fixture);
+    m_internals->materials.Erase(fixture);
 }
 
 void Effects::SetDestructionListener(b2DestructionListener* listener)
 {
-    m_destruction->forward = listener;
+    m_internals->destruction.forward = listener;
 }
 
 void Effects::Step(float dt)
 {
-    m_tracker.Prune();
-    m_events.assign(m_tracker.EndedScrapes().begin(), m_tracker.EndedScrapes().end());
-    m_tracker.ClearEndedScrapes();
-    m_emitter->Emit(m_world, m_config, m_tracker, m_particles, m_stats, m_events, dt);
+    ContactTracker& tracker = m_internals->tracker;
+    tracker.Prune();
+    m_events.assign(tracker.EndedScrapes().begin(), tracker.EndedScrapes().end());
+    tracker.ClearEndedScrapes();
+    m_internals->emitter.Emit(m_world, m_config, tracker, m_particles, m_stats, m_events, dt);
     m_particles.Step(dt, m_world.GetGravity());
-    m_tracker.EndStep();
+    tracker.EndStep();
     m_stats.steps += 1;
     m_stats.time += static_cast<double>(dt);
     m_stats.live = m_particles.Count();
@@ -135,5 +164,15 @@ void Effects::Step(float dt)
         }
     }
 }
+
+namespace detail
+{
+
+const ContactTracker& EffectsAccess::Tracker(const Effects& effects)
+{
+    return effects.m_internals->tracker;
+}
+
+} // namespace detail
 
 } // namespace cfx

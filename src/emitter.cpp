@@ -1,5 +1,7 @@
 #include "emitter.h"
 
+#include "particle_system_access.h"
+
 #include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_contact.h>
@@ -53,6 +55,7 @@ struct Emitter::RuleContext
     b2World& world;
     ContactTracker& tracker;
     ParticleSystem& particles;
+    ParticleBodyFilter particleBodies; // spawn point tests ignore body-backed particles' bodies
     EffectsStats& stats;
     std::vector<EffectEvent>& events;
     const RuleDef& rule;
@@ -80,8 +83,8 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
         const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
         RuleContext context{
-            world,  tracker,   particles, stats, events, rule, config.particleTypes[typeId.index],
-            typeId, ruleStats, dt};
+            world, tracker, particles, ParticleBodyFilter(particles), stats, events, rule,
+            config.particleTypes[typeId.index], typeId, ruleStats, dt};
         std::span<TrackedContact> contacts = tracker.Contacts(ruleId);
         ruleStats.contacts = static_cast<std::uint32_t>(contacts.size());
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
@@ -274,9 +277,9 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         query.normal = surfaceNormal;
         query.slip = slip;
         query.radius = type.radius;
-        start = FindSpawnPoint(context.world, query, &context.particles);
+        start = FindSpawnPoint(context.world, query, &context.particleBodies);
     }
-    if (IsInsideSolid(context.world, start.position, &context.particles))
+    if (IsInsideSolid(context.world, start.position, &context.particleBodies))
     {
         context.stats.spawnedInsideSolid += static_cast<std::uint64_t>(count);
     }

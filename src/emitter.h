@@ -10,7 +10,11 @@
 // the same inputs and seed give the same particles bit for bit.
 #pragma once
 
-#include "contactfx/effects.h"
+#include "contact_tracker.h"
+#include "contactfx/config.h"
+#include "contactfx/intensity.h"
+#include "contactfx/particle_system.h"
+#include "contactfx/stats.h"
 #include "random.h"
 
 #include <cstdint>

@@ -2,6 +2,8 @@
 // and the shape of a step: scan the world (serial), advance runs of particles (one per thread), then
 // join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
 #include "contactfx/particle_system.h"
+#include "particle_system_access.h"
+#include "pointer_map.h"
 
 #include "particles/motion.h"
 #include "particles/workers.h"
@@ -270,9 +272,9 @@ void ParticleSystem::Step(float dt, b2Vec2 gravity)
     Advance(dt, gravity, true);
 }
 
-void ParticleSystem::Integrate(float dt, b2Vec2 gravity)
+void detail::ParticleSystemAccess::IntegrateWithoutCollision(ParticleSystem& system, float dt, b2Vec2 gravity)
 {
-    Advance(dt, gravity, false);
+    system.Advance(dt, gravity, false);
 }
 
 namespace
@@ -323,7 +325,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
     particles::StepTrust trust;
     if (scan)
     {
-        impl.geometry.Scan(impl.world, impl.anyBodyBacked ? this : nullptr, dt);
+        const detail::ParticleBodyFilter particleBodies(*this);
+        impl.geometry.Scan(impl.world, impl.anyBodyBacked ? &particleBodies : nullptr, dt);
         trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
         trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
         impl.lastDt = dt;
@@ -394,7 +397,7 @@ ParticleView ParticleSystem::View() const
     return view;
 }
 
-bool ParticleSystem::Ignore(const b2Body* body) const
+bool ParticleSystem::IsParticleBody(const b2Body* body) const
 {
     return m_impl->bodySet.Find(body) != nullptr;
 }

@@ -1,4 +1,4 @@
-#include "contactfx/spawn.h"
+#include "spawn.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>

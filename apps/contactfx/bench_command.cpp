@@ -12,7 +12,6 @@
 
 #include "cli_common.h"
 #include "contactfx/error.h"
-#include "contactfx/presets.h"
 #include "harness/scenes.h"
 #include "scenes/demo_bench.h"
 #include "scenes/particle_bench.h"
@@ -135,8 +134,10 @@ int RunParticles(const ParticleBenchOptions& options)
 
 int RunDemo(const DemoBenchOptions& options)
 {
-    const bench::DemoBenchResult result = bench::MeasureDemo(BundledScenesDir() / "physics_driven_particles.json",
-                                                             DefaultPreset(), 60.0f, options.steps);
+    // The demo's scene and effects, from the registry (harness/scenes.h); MeasureDemo drives its car.
+    const SimulationDef tutorial = SceneSimulationDef(*FindScene("tutorial"), BundledScenesDir());
+    const bench::DemoBenchResult result =
+        bench::MeasureDemo(tutorial.scene, tutorial.config, tutorial.hz, options.steps);
     if (options.json)
     {
         const Json out{{"steps", result.steps},
@@ -151,8 +152,9 @@ int RunDemo(const DemoBenchOptions& options)
         std::printf("%s\n", out.dump().c_str());
         return kExitOk;
     }
-    std::printf("contactfx bench demo: tutorial scene, scripted drive, default effects, %u steps at 60 Hz\n",
-                result.steps);
+    std::printf("contactfx bench demo: tutorial scene, scripted drive, %s effects, %u steps at %.0f Hz\n",
+                tutorial.config.name.empty() ? "custom" : tutorial.config.name.c_str(), result.steps,
+                static_cast<double>(tutorial.hz));
     std::printf("  world.Step alone:           min %.4f ms, median %.4f ms\n", result.worldAloneMsMin,
                 result.worldAloneMsMedian);
     std::printf("  world.Step + effects:       min %.4f ms, median %.4f ms\n", result.withEffectsMsMin,

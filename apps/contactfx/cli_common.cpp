@@ -35,10 +35,17 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
 
 void AddEffectsOptions(CLI::App& command, RunOptions& options, const std::string& effectsHelp)
 {
-    command.add_option("--preset", options.preset, "Built-in effects: default or tutorial")
-        ->check(CLI::IsMember({"default", "tutorial"}))
-        ->capture_default_str();
+    command
+        .add_option("--preset", options.preset,
+                    "Built-in effects: default or tutorial. Without --preset and --effects: a registered "
+                    "scene's own effects, else default")
+        ->check(CLI::IsMember({"default", "tutorial"}));
     command.add_option("--effects", options.effects, effectsHelp);
+}
+
+bool EffectsChosen(const RunOptions& options)
+{
+    return !options.effects.empty() || !options.preset.empty();
 }
 
 void CheckRunOptions(const RunOptions& options)

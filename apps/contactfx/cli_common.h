@@ -19,8 +19,9 @@ inline constexpr int kExitError = 1;
 /// Options of commands that simulate.
 struct RunOptions
 {
-    std::string scene;
-    std::string preset = "default";
+    std::string scene;     ///< RUBE JSON file; empty: sceneName
+    std::string sceneName; ///< --scene NAME, a registered scene (harness/scenes.h); empty: scene
+    std::string preset;    ///< --preset default|tutorial; empty: the scene's effects, else default
     std::string effects;   ///< effects config file; empty: the preset
     double seconds = 20.0; ///< simulated time, (0, 86400]
     double hz = 60.0;      ///< step rate, [1, 10000]
@@ -37,10 +38,14 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo);
 void AddEffectsOptions(CLI::App& command, RunOptions& options,
                        const std::string& effectsHelp = "Effects config JSON (overrides --preset)");
 
+/// True when --preset or --effects was given: they replace a registered scene's effects.
+bool EffectsChosen(const RunOptions& options);
+
 /// Checks ranges CLI11 cannot (NaN, infinities); throws InputError naming the flag.
 void CheckRunOptions(const RunOptions& options);
 
-/// The effects configuration the options select: --effects FILE, else --preset NAME.
+/// The effects configuration the options select: --effects FILE, else --preset NAME, else the default
+/// preset.
 EffectsConfig SelectConfig(const RunOptions& options);
 
 /// Runs `body`, turning exceptions into one error line per problem on stderr and exit code 1.

@@ -1,48 +1,71 @@
 // contactfx: the command line.
 //
 //   contactfx demo      the tutorial scene, driven by a script, headless
-//   contactfx run       any RUBE scene with effects
-//   contactfx preset    a built-in effects configuration as JSON
+//   contactfx run       a registered scene (--scene NAME) or any RUBE scene file with effects
+//   contactfx render    pictures of the same: one PNG, a PNG sequence or a video
 //   contactfx validate  every problem of scenes and effects configs
+//   contactfx preset    a built-in effects configuration as JSON
 //   contactfx bench     time the particles (pool against a body per particle) and the effects layer
+//   contactfx help      the commands, or one command's options
 //
-// Exit code 0 on success, 1 on any error (one line per problem on stderr, naming file and field).
+// Exit code 0 on success (and for --help, --version and help), 1 on any error: one line per problem on
+// stderr ("contactfx: error: ..."), naming file and field, or for a command line that is not understood
+// the unknown command or option with the nearest valid one and a pointer at --help.
 #include "bench_command.h"
 #include "cli_common.h"
+#include "contactfx/version.h"
+#include "help_command.h"
 #include "preset_command.h"
 #include "render_command.h"
 #include "run_command.h"
+#include "usage.h"
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
-#include <iostream>
+#include <string>
+
+namespace
+{
+
+constexpr const char* kFooter = R"(Examples:
+  contactfx demo --seconds 20 --stats out/demo-stats.json
+  contactfx run --scene grinder --events out/grinder.jsonl
+  contactfx render --scene rockslide --out out/rockslide.mp4
+
+'contactfx help COMMAND' (or 'contactfx COMMAND --help') shows the options of a command.)";
+
+} // namespace
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"contactfx: physically driven particle effects from Box2D contacts"};
+    CLI::App app{"contactfx: physically driven particle effects from Box2D contacts", "contactfx"};
+    app.set_version_flag("--version", std::string("contactfx ") + cfx::kVersion,
+                         "Print the version and exit");
     app.require_subcommand(1);
+    // "Commands" and COMMAND rather than CLI11's "Subcommands": commands inherit the group, and share
+    // the formatter.
+    app.group("Commands");
+    app.get_formatter()->label("SUBCOMMAND", "COMMAND");
     int result = cfx::cli::kExitOk;
+    // In the order the help lists them.
     cfx::cli::RegisterRunCommands(app, result);
-    cfx::cli::RegisterBenchCommand(app, result);
-    cfx::cli::RegisterPresetCommand(app, result);
     cfx::cli::RegisterRenderCommand(app, result);
     cfx::cli::RegisterValidateCommand(app, result);
+    cfx::cli::RegisterPresetCommand(app, result);
+    cfx::cli::RegisterBenchCommand(app, result);
+    cfx::cli::RegisterHelpCommand(app, result);
+    app.footer(kFooter); // after the commands, which would inherit it
     try
     {
         app.parse(argc, argv);
     }
-    catch (const CLI::CallForHelp& help)
+    catch (const CLI::Success& helpOrVersion) // --help, --help-all, --version: on stdout, exit code 0
     {
-        return app.exit(help);
-    }
-    catch (const CLI::CallForAllHelp& help)
-    {
-        return app.exit(help);
+        return app.exit(helpOrVersion);
     }
     catch (const CLI::ParseError& error)
     {
-        std::cerr << "contactfx: error: " << error.what() << '\n';
-        return cfx::cli::kExitError;
+        return cfx::cli::ReportParseError(app, error);
     }
     return result;
 }

@@ -1,4 +1,4 @@
-// contactfx render (SCENE.json | --demo) --out FILE: the simulation as pictures.
+// contactfx render (SCENE.json | --scene NAME | --demo) --out FILE: the simulation as pictures.
 //
 // Frame k shows the simulation at time k / fps (after round(k / fps * hz) steps), so the same flags
 // give the same pixels, and a single PNG at --time T is the frame a video would show at T. Everything
@@ -11,9 +11,8 @@
 #include "contactfx/render/frame.h"
 #include "contactfx/render/frame_output.h"
 #include "contactfx/scene/text_file.h"
-#include "harness/scenes.h"
-#include "harness/simulation.h"
 #include "progress.h"
+#include "scenario.h"
 
 #include <box2d/b2_body.h>
 #include <cmath>
@@ -30,7 +29,7 @@ namespace
 struct RenderOptions
 {
     RunOptions run;
-    bool demo = false;
+    bool demo = false; ///< --demo: --scene tutorial
     std::string out;
     std::optional<double> time; ///< s; a single PNG of this moment
     int width = 1280;           ///< px
@@ -49,11 +48,6 @@ constexpr int kMaxSide = 8192;
 
 render::OutputKind CheckRenderOptions(const RenderOptions& options)
 {
-    if (options.demo == !options.run.scene.empty())
-    {
-        Refuse("scene",
-               options.demo ? "give either a scene file or --demo, not both" : "give a scene file or --demo");
-    }
     CheckRunOptions(options.run);
     if (options.width < 2 || options.width > kMaxSide)
     {
@@ -115,19 +109,17 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
 
 int Render(RenderOptions options)
 {
-    const render::OutputKind kind = CheckRenderOptions(options);
-    std::span<const DriveSegment> drive;
     if (options.demo)
     {
-        options.run.scene = (BundledScenesDir() / "physics_driven_particles.json").string();
-        drive = TutorialDrive();
+        if (!options.run.scene.empty() || !options.run.sceneName.empty())
+        {
+            Refuse("--demo", "give a scene file, --scene NAME or --demo, not two of them");
+        }
+        options.run.sceneName = "tutorial";
     }
-    SimulationDef def;
-    def.scene = options.run.scene;
-    def.config = SelectConfig(options.run);
-    def.seed = options.run.seed;
-    def.hz = static_cast<float>(options.run.hz);
-    def.drive = drive;
+    const render::OutputKind kind = CheckRenderOptions(options);
+    const Scenario scenario = SelectScenario(options.run);
+    const SimulationDef& def = scenario.def;
     Simulation simulation(def);
 
     const b2Body* followed = nullptr;
@@ -174,7 +166,7 @@ int Render(RenderOptions options)
         const auto steps = static_cast<std::uint64_t>(std::llround(time * options.run.hz));
         while (simulation.Steps() < steps)
         {
-            simulation.Step();
+            scenario.Step(simulation);
             if (followed != nullptr)
             {
                 render::FollowSmoothly(camera, *followed, lift, simulation.Dt(), kSmoothing);
@@ -210,8 +202,8 @@ void RegisterRenderCommand(CLI::App& app, int& result)
     CLI::App* render = app.add_subcommand(
         "render",
         "Pictures of a scene with effects: one PNG (--time), a PNG sequence, or an .mp4/.gif video");
-    render->add_option("scene", options->run.scene, "RUBE JSON scene (or --demo)");
-    render->add_flag("--demo", options->demo, "The tutorial scene with the demo's scripted drive");
+    AddSceneOptions(*render, options->run, "RUBE JSON scene (or --scene NAME, or --demo)");
+    render->add_flag("--demo", options->demo, "The demo's scene: the same as --scene tutorial");
     render
         ->add_option("--out", options->out,
                      "FILE.png (one frame), DIR/frame_%04d.png (a sequence), FILE.mp4 or FILE.gif (ffmpeg)")

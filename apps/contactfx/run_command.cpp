@@ -2,9 +2,8 @@
 
 #include "cli_common.h"
 #include "contactfx/scene/text_file.h"
-#include "harness/scenes.h"
-#include "harness/simulation.h"
 #include "plot_option.h"
+#include "scenario.h"
 
 #include <cmath>
 #include <cstdio>
@@ -46,23 +45,18 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
                 static_cast<unsigned long long>(stats.spawnedInsideSolid));
 }
 
-int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, const std::string& what,
-             const std::string& plotFile)
+// Runs what `options` select for --seconds; `what` heads the summary and the plot.
+int Simulate(const RunOptions& options, const std::string& what, const std::string& plotFile)
 {
     CheckRunOptions(options);
-    SimulationDef def;
-    def.scene = options.scene;
-    def.config = SelectConfig(options);
-    def.seed = options.seed;
-    def.hz = static_cast<float>(options.hz);
-    def.drive = drive;
-    Simulation simulation(def);
+    const Scenario scenario = SelectScenario(options);
+    Simulation simulation(scenario.def);
     PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));
     std::string events;
     for (std::uint64_t i = 0; i < steps; ++i)
     {
-        simulation.Step();
+        scenario.Step(simulation);
         plot.AfterStep(simulation.GetEffects(), simulation.Dt());
         if (!options.events.empty())
         {
@@ -74,7 +68,7 @@ int Simulate(const RunOptions& options, std::span<const DriveSegment> drive, con
     }
     if (!options.stats.empty())
     {
-        WriteTextFileAtomically(options.stats, StatsJson(simulation.GetEffects(), def.hz));
+        WriteTextFileAtomically(options.stats, StatsJson(simulation.GetEffects(), scenario.def.hz));
     }
     if (!options.events.empty())
     {
@@ -103,17 +97,17 @@ void RegisterRunCommands(CLI::App& app, int& result)
             result = Guarded(
                 [&]
                 {
-                    const SceneEntry& tutorial = *FindScene("tutorial"); // the registry's (scenes.h)
-                    demoOptions->scene = (BundledScenesDir() / tutorial.file).string();
-                    return Simulate(*demoOptions, tutorial.drive, "contactfx demo", *demoPlot);
+                    demoOptions->sceneName = "tutorial";
+                    return Simulate(*demoOptions, "contactfx demo", *demoPlot);
                 });
         });
 
     auto runOptions = std::make_shared<RunOptions>();
     auto runPlot = std::make_shared<std::string>();
-    CLI::App* run =
-        app.add_subcommand("run", "Any RUBE scene: bodies move by their initial velocities and joint motors");
-    run->add_option("scene", runOptions->scene, "RUBE JSON scene")->required();
+    CLI::App* run = app.add_subcommand(
+        "run", "A registered scene (--scene NAME) with its scripted drive, or any RUBE scene file as it is");
+    AddSceneOptions(*run, *runOptions,
+                    "RUBE JSON scene: bodies move by their initial velocities and joint motors");
     AddRunOptions(*run, *runOptions, false);
     run->add_option("--events", runOptions->events,
                     "Write scrape and impact events as JSON Lines to this file");
@@ -122,7 +116,13 @@ void RegisterRunCommands(CLI::App& app, int& result)
         [runOptions, runPlot, &result]
         {
             result = Guarded(
-                [&] { return Simulate(*runOptions, {}, "contactfx run " + runOptions->scene, *runPlot); });
+                [&]
+                {
+                    const std::string what = runOptions->sceneName.empty()
+                                                 ? runOptions->scene
+                                                 : "--scene " + runOptions->sceneName;
+                    return Simulate(*runOptions, "contactfx run " + what, *runPlot);
+                });
         });
 }
 

@@ -1,10 +1,13 @@
 // contactfx-testbed: look at contactfx's effects live, in the spirit of Box2D's testbed.
 //
 //   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]]
+//   contactfx-testbed --version
 //
-// Exit code 0 on success, 1 on any error (one line on stderr naming the flag or file).
+// Exit code 0 on success (and for --help and --version), 1 on any error (one line on stderr naming the
+// flag or file).
 #include "app.h"
 #include "contactfx/error.h"
+#include "contactfx/version.h"
 #include "harness/scenes.h"
 #include "options.h"
 
@@ -35,13 +38,15 @@ int main(int argc, char** argv)
                                          "interaction, drawing the last few, then exit");
     app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG");
     app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");
+    app.set_version_flag("--version", std::string("contactfx-testbed ") + cfx::kVersion,
+                         "Print the version and exit");
     try
     {
         app.parse(argc, argv);
     }
-    catch (const CLI::CallForHelp& help)
+    catch (const CLI::Success& helpOrVersion) // --help, --version: on stdout, exit code 0
     {
-        return app.exit(help);
+        return app.exit(helpOrVersion);
     }
     catch (const CLI::ParseError& error)
     {

@@ -1,6 +1,7 @@
 // contactfx-testbed: the command line.
 //
 //   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]] [--hide-particles]
+//   contactfx-testbed --version        prints "contactfx-testbed VERSION" and exits 0 (main.cpp)
 //
 // Without --frames the testbed is interactive until its window closes. With --frames it runs N frames of
 // one simulation step each without waiting for input, saves the last one as PNG when --screenshot is

@@ -13,8 +13,6 @@
 #include <span>
 #include <vector>
 
-class b2Draw;
-
 namespace cfx
 {
 
@@ -42,10 +40,5 @@ public:
 
 /// The live particles of `effects` as sprites, oldest first. Reuses `out`'s storage.
 void CollectSprites(const Effects& effects, std::vector<ParticleSprite>& out);
-
-/// Draws the world through `shapes` (b2World::DebugDraw with shapes on) and the particles through
-/// `particles`. Either may be null.
-void DrawEffects(const Effects& effects, b2Draw* shapes, ParticleDraw* particles,
-                 std::vector<ParticleSprite>& scratch);
 
 } // namespace cfx

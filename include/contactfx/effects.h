@@ -20,12 +20,14 @@
 #pragma once
 
 #include "contactfx/config.h"
-#include "contactfx/contact_tracker.h"
 #include "contactfx/events.h"
 #include "contactfx/particle_system.h"
+#include "contactfx/rules.h"
+#include "contactfx/stats.h"
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -40,7 +42,7 @@ namespace cfx
 
 namespace detail
 {
-class Emitter;
+struct EffectsAccess;
 }
 
 /// How to create an Effects object.
@@ -51,29 +53,6 @@ struct EffectsDef
     b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
     EffectEventListener* eventListener = nullptr;         ///< receives each step's events, may be null
-};
-
-/// Counters of one rule.
-struct RuleStats
-{
-    std::uint32_t contacts = 0;    ///< tracked contacts now
-    std::uint32_t contactsMax = 0; ///< most tracked contacts at once
-    std::uint64_t spawned = 0;     ///< particles emitted in all
-    std::uint32_t spawnedLastStep = 0;
-    float intensityMaxLastStep = 0.0f; ///< largest sample intensity in the last step
-};
-
-/// Counters since creation.
-struct EffectsStats
-{
-    std::uint64_t steps = 0;
-    double time = 0.0;                        ///< s, sum of step times
-    std::vector<std::uint64_t> spawnedByType; ///< per particle type
-    std::vector<RuleStats> rules;             ///< per rule
-    std::uint32_t live = 0;
-    std::uint32_t liveMax = 0;
-    std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture
-    std::uint64_t recycled = 0;           ///< live particles replaced because the pool was full
 };
 
 class Effects
@@ -90,12 +69,13 @@ public:
     void SetMaterial(b2Fixture* fixture, MaterialId material);
     /// Gives every fixture of `body` the material.
     void SetMaterial(b2Body* body, MaterialId material);
-    MaterialId GetMaterial(const b2Fixture* fixture) const { return m_materials.Get(fixture); }
+    /// The fixture's material, or an invalid id.
+    MaterialId Material(const b2Fixture* fixture) const;
     /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
     /// material and its contacts. Fixtures destroyed with their body are handled automatically.
     void ForgetFixture(b2Fixture* fixture);
 
-    void SetContactListener(b2ContactListener* listener) { m_tracker.SetForward(listener); }
+    void SetContactListener(b2ContactListener* listener);
     void SetDestructionListener(b2DestructionListener* listener);
     void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
 
@@ -107,21 +87,18 @@ public:
     std::span<const EffectEvent> Events() const { return m_events; }
     ParticleView Particles() const { return m_particles.View(); }
     const EffectsConfig& Config() const { return m_config; }
-    const ContactTracker& Tracker() const { return m_tracker; }
     const RuleTable& Rules() const { return m_rules; }
     b2World& World() const { return m_world; }
 
 private:
-    class Destruction;
+    friend struct detail::EffectsAccess; // the library's own tests and tools (src/effects_access.h)
+    struct Internals;                    // materials table, contact tracker, listeners, emitter
 
     b2World& m_world;
     EffectsConfig m_config;
     RuleTable m_rules;
-    FixtureMaterials m_materials;
-    ContactTracker m_tracker;
     ParticleSystem m_particles;
-    std::unique_ptr<Destruction> m_destruction;
-    std::unique_ptr<detail::Emitter> m_emitter;
+    std::unique_ptr<Internals> m_internals;
     EffectsStats m_stats;
     std::vector<EffectEvent> m_events;
     EffectEventListener* m_eventListener = nullptr;

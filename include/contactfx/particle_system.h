@@ -27,7 +27,6 @@
 
 #include "contactfx/config.h"
 #include "contactfx/materials.h"
-#include "contactfx/spawn.h"
 
 #include <box2d/b2_math.h>
 #include <cstddef>
@@ -40,6 +39,11 @@ class b2Body;
 
 namespace cfx
 {
+
+namespace detail
+{
+struct ParticleSystemAccess;
+}
 
 /// A particle to add.
 struct ParticleSpawn
@@ -84,13 +88,13 @@ struct ParticleSystemOptions
     std::uint32_t minParticlesPerThread = 2048;
 };
 
-class ParticleSystem final : public BodyFilter
+class ParticleSystem final
 {
 public:
     /// `types` must be valid (see Validate); they are copied. Allocates every array once.
     ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types, const ParticleBudget& budget,
                    const ParticleSystemOptions& options = {});
-    ~ParticleSystem() override;
+    ~ParticleSystem();
     ParticleSystem(const ParticleSystem&) = delete;
     ParticleSystem& operator=(const ParticleSystem&) = delete;
 
@@ -98,9 +102,6 @@ public:
     void Spawn(const ParticleSpawn& spawn);
     /// Advances every particle by `dt` seconds (> 0) under `gravity` (m/s^2).
     void Step(float dt, b2Vec2 gravity);
-    /// Step without collision for pool particles: gravity, drag, motion and ageing over the same arrays.
-    /// The reference that measures what collision costs (contactfx bench); effects never call it.
-    void Integrate(float dt, b2Vec2 gravity);
     /// Rebuilds the static geometry cache at the next step. Only needed after editing a static
     /// fixture's shape in place; everything else is detected (docs/particles.md).
     void InvalidateStaticGeometry();
@@ -110,8 +111,9 @@ public:
     std::uint32_t Capacity() const { return m_capacity; }
     /// Particles that took the place of a live one because the pool was full.
     std::uint64_t Recycled() const { return m_recycled; }
-    /// Body-backed particles' bodies are ignored by spawn point tests.
-    bool Ignore(const b2Body* body) const override;
+    /// Whether `body` is the Box2D body of one of this system's body-backed particles (spawn point
+    /// tests and the static geometry cache ignore those; an application's own queries may too).
+    bool IsParticleBody(const b2Body* body) const;
 
     /// Threads the last step used (1 when it was not split).
     unsigned ThreadsUsed() const { return m_threadsUsed; }
@@ -122,9 +124,10 @@ public:
     /// Heap bytes of the per-particle arrays for one slot.
     std::size_t BytesPerSlot() const;
 
+private:
+    friend struct detail::ParticleSystemAccess; // benchmarks and tests (src/particle_system_access.h)
     struct Impl;
 
-private:
     std::unique_ptr<Impl> m_impl;
     std::uint32_t m_count = 0;
     std::uint32_t m_capacity = 0;

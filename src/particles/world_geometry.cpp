@@ -1,7 +1,7 @@
 // contactfx internal: the static cache and the per-step walk of the world (see world_geometry.h).
 #include "particles/world_geometry.h"
 
-#include "contactfx/spawn.h"
+#include "spawn.h"
 
 #include <algorithm>
 #include <bit>

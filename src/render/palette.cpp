@@ -27,7 +27,7 @@ ShapePalette TutorialPalette()
 
 b2Color FixtureColor(const Effects& effects, const ShapePalette& palette, const b2Fixture& fixture)
 {
-    const MaterialId material = effects.GetMaterial(&fixture);
+    const MaterialId material = effects.Material(&fixture);
     if (material.IsValid())
     {
         const std::string& name = effects.Config().materials[material.index];

@@ -63,6 +63,18 @@ TEST(CliRender, OneFrameAtATimeIsAPngOfTheAskedSize)
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"frame.png"}); // no temporary file left
 }
 
+TEST(CliRender, ARegisteredSceneRendersLikeAFile)
+{
+    const std::filesystem::path dir = ScratchDir("render_scene");
+    const std::filesystem::path out = dir / "x.png";
+    const CliResult result = RunCli("render --scene grinder --time 2" + kTiny + "--out " + out.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const auto size = PngSize(Bytes(out));
+    ASSERT_TRUE(size.has_value());
+    EXPECT_EQ(size->first, 48u);
+    EXPECT_EQ(size->second, 32u);
+}
+
 TEST(CliRender, SameFlagsGiveTheSameBytesAndTheOneFrameIsTheSequencesFrame)
 {
     const std::filesystem::path dir = ScratchDir("render_same");

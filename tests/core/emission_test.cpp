@@ -1,3 +1,4 @@
+#include "effects_access.h"
 #include "test_world.h"
 
 #include <cmath>
@@ -126,7 +127,7 @@ TEST(Emission, SteelOnRubberGivesNothing)
         box->SetLinearVelocity(b2Vec2(6.0f, box->GetLinearVelocity().y));
         scene.Step();
     }
-    EXPECT_EQ(fx.Tracker().TrackedCount(), 0u);
+    EXPECT_EQ(detail::EffectsAccess::Tracker(fx).TrackedCount(), 0u);
     for (std::uint64_t spawned : fx.Stats().spawnedByType)
     {
         EXPECT_EQ(spawned, 0u);

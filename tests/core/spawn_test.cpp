@@ -1,3 +1,4 @@
+#include "spawn.h"
 #include "test_world.h"
 
 #include <cmath>

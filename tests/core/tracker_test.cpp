@@ -1,3 +1,4 @@
+#include "effects_access.h"
 #include "test_world.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ struct BoxOnGround : TestWorld
     }
     std::size_t Tracked(int rule = 0) const
     {
-        return effects->Tracker().Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size();
+        return detail::EffectsAccess::Tracker(*effects).Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size();
     }
 
     b2Body* ground = nullptr;
@@ -51,7 +52,7 @@ TEST(ContactTracker, FixtureWithoutMaterialIsNotTracked)
     scene.Attach();
     scene.effects->SetMaterial(scene.ground, scene.Material("concrete"));
     scene.Step();
-    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
+    EXPECT_EQ(detail::EffectsAccess::Tracker(*scene.effects).TrackedCount(), 0u);
 }
 
 TEST(ContactTracker, DestroyedBodyLeavesNoTrackedContact)
@@ -62,7 +63,7 @@ TEST(ContactTracker, DestroyedBodyLeavesNoTrackedContact)
     scene.Step();
     ASSERT_EQ(scene.Tracked(0), 1u);
     scene.world->DestroyBody(scene.box);
-    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
+    EXPECT_EQ(detail::EffectsAccess::Tracker(*scene.effects).TrackedCount(), 0u);
     scene.Step(); // must not touch the destroyed contact
     EXPECT_EQ(scene.Tracked(0), 0u);
 }
@@ -76,8 +77,8 @@ TEST(ContactTracker, DestroyedFixtureLeavesNoTrackedContactOrMaterial)
     b2Fixture* fixture = scene.box->GetFixtureList();
     scene.effects->ForgetFixture(fixture);
     scene.box->DestroyFixture(fixture);
-    EXPECT_EQ(scene.effects->Tracker().TrackedCount(), 0u);
-    EXPECT_FALSE(scene.effects->GetMaterial(fixture).IsValid());
+    EXPECT_EQ(detail::EffectsAccess::Tracker(*scene.effects).TrackedCount(), 0u);
+    EXPECT_FALSE(scene.effects->Material(fixture).IsValid());
     scene.Step();
 }
 
@@ -87,9 +88,9 @@ TEST(ContactTracker, BodyDestructionForgetsTheFixturesMaterials)
     scene.Attach();
     scene.Assign();
     const b2Fixture* fixture = scene.box->GetFixtureList();
-    ASSERT_TRUE(scene.effects->GetMaterial(fixture).IsValid());
+    ASSERT_TRUE(scene.effects->Material(fixture).IsValid());
     scene.world->DestroyBody(scene.box);
-    EXPECT_FALSE(scene.effects->GetMaterial(fixture).IsValid());
+    EXPECT_FALSE(scene.effects->Material(fixture).IsValid());
 }
 
 TEST(ContactTracker, SensorLeavesTrackingAndSolidComesBack)
@@ -169,7 +170,7 @@ TEST(ContactTracker, RecordsPostSolveImpulses)
             scene.effects->Step(1.0f / 60.0f);
         }
     }
-    const TrackedContact& tracked = scene.effects->Tracker().Contacts(RuleId{0})[0];
+    const TrackedContact& tracked = detail::EffectsAccess::Tracker(*scene.effects).Contacts(RuleId{0})[0];
     // A resting 1 kg box: the two points share its weight, 10 N * (1/60) s per step.
     EXPECT_NEAR(tracked.normalImpulse[0] + tracked.normalImpulse[1], 10.0f / 60.0f, 0.02f);
 }

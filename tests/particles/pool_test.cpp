@@ -1,5 +1,6 @@
 // The particle pool against the world: sweeps at speed, materials, moving bodies, the static cache's
 // contract, threads, recycling, and the same behaviour with a body per particle.
+#include "particle_system_access.h"
 #include "particles/particle_pool_fixture.h"
 
 #include <box2d/b2_distance.h>
@@ -317,10 +318,10 @@ TEST(ParticlePool, CollidingStepsSplitAtFewerParticlesThanStepsWithoutCollision)
     fill(250, 0);
     scene.StepAll();
     EXPECT_EQ(scene.system->ThreadsUsed(), 2u) << "250 colliding particles: 125 a thread";
-    scene.system->Integrate(kDt, scene.world->GetGravity());
+    detail::ParticleSystemAccess::IntegrateWithoutCollision(*scene.system, kDt, scene.world->GetGravity());
     EXPECT_EQ(scene.system->ThreadsUsed(), 1u) << "the same 250 without collision: under 800 a thread";
     fill(1700, 0);
-    scene.system->Integrate(kDt, scene.world->GetGravity());
+    detail::ParticleSystemAccess::IntegrateWithoutCollision(*scene.system, kDt, scene.world->GetGravity());
     EXPECT_EQ(scene.system->ThreadsUsed(), 2u) << "1,700 without collision: 850 a thread";
 
     Pool ghosts({ghost}, {4000, RecyclePolicy::oldest}, options);
@@ -424,7 +425,7 @@ TEST(ParticlePool, ClearancesAreNotTrustedAfterMovingWithoutCollision)
     for (int i = 0; i < 25; ++i)
     {
         scene.world->Step(kDt, 8, 3);
-        scene.system->Integrate(kDt, scene.world->GetGravity());
+        detail::ParticleSystemAccess::IntegrateWithoutCollision(*scene.system, kDt, scene.world->GetGravity());
     }
     ASSERT_EQ(scene.system->Count(), 2u) << "the short-lived ghost died";
     ASSERT_GT(scene.Position(0).y, 0.2f) << "the ball has not reached the ground yet";

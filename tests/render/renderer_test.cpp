@@ -28,7 +28,7 @@ Camera TestCamera()
 // The pixel a world point falls on.
 Pixel PixelAtWorld(const CairoRenderer& renderer, b2Vec2 world)
 {
-    const b2Vec2 at = renderer.GetCamera().ToPixels(world);
+    const b2Vec2 at = renderer.CurrentCamera().ToPixels(world);
     return renderer.PixelAt(static_cast<int>(at.x), static_cast<int>(at.y));
 }
 

@@ -167,7 +167,7 @@ TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
     EXPECT_THROW(AssignSceneMaterials(scene, effects, "scene.json"), InputError);
     for (const SceneFixture& fixture : scene.fixtures)
     {
-        EXPECT_FALSE(effects.GetMaterial(fixture.fixture).IsValid());
+        EXPECT_FALSE(effects.Material(fixture.fixture).IsValid());
     }
 }
 

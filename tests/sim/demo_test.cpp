@@ -52,7 +52,7 @@ TEST(TutorialScene, EveryFixtureGetsItsMaterial)
     {
         const std::string* name = fixture.properties.FindString("material");
         ASSERT_NE(name, nullptr);
-        EXPECT_EQ(simulation.GetEffects().GetMaterial(fixture.fixture),
+        EXPECT_EQ(simulation.GetEffects().Material(fixture.fixture),
                   simulation.GetEffects().FindMaterial(*name));
     }
     ASSERT_TRUE(simulation.GetCar().has_value());

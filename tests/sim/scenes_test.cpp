@@ -60,8 +60,8 @@ TEST(SceneRegistry, EverySceneLoadsAndEveryFixtureHasItsMaterial)
         {
             const std::string* material = fixture.properties.FindString("material");
             ASSERT_NE(material, nullptr) << fixture.name;
-            EXPECT_TRUE(effects.GetMaterial(fixture.fixture).IsValid()) << fixture.name;
-            EXPECT_EQ(effects.GetMaterial(fixture.fixture), effects.FindMaterial(*material)) << fixture.name;
+            EXPECT_TRUE(effects.Material(fixture.fixture).IsValid()) << fixture.name;
+            EXPECT_EQ(effects.Material(fixture.fixture), effects.FindMaterial(*material)) << fixture.name;
         }
         // A scene that drives or follows a car has one.
         if (!entry.drive.empty() || entry.followCar)

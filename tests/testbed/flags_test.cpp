@@ -1,5 +1,6 @@
 // contactfx-testbed's command line: every bad flag is one line on stderr and exit code 1, before any
 // window opens, and no screenshot is left behind. None of these needs a display.
+#include "contactfx/version.h"
 #include "testbed/testbed_support.h"
 
 #include <gtest/gtest.h>
@@ -23,6 +24,13 @@ void ExpectRefused(const CliResult& result, const std::vector<std::string>& expe
 }
 
 } // namespace
+
+TEST(TestbedFlags, VersionPrintsTheVersionOfTheHeaders)
+{
+    const CliResult result = RunTestbed("--version");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(result.output, std::string("contactfx-testbed ") + CONTACTFX_VERSION_STRING + "\n");
+}
 
 TEST(TestbedFlags, UnknownSceneNamesTheRegisteredOnes)
 {

@@ -98,7 +98,7 @@ public:
 
     int Width() const { return m_width; }
     int Height() const { return m_height; }
-    const Camera& GetCamera() const { return m_camera; }
+    const Camera& CurrentCamera() const { return m_camera; }
     const RenderStyle& Style() const { return m_style; }
 
     /// The pixel at column x, row y (from the top left), both inside the image.

@@ -1,9 +1,6 @@
-#include "contactfx/materials.h"
+#include "pointer_map.h"
 
-namespace cfx
-{
-
-namespace detail
+namespace cfx::detail
 {
 
 void PointerMap::Set(const void* key, std::uint64_t value)
@@ -92,18 +89,4 @@ void PointerMap::Grow()
     }
 }
 
-} // namespace detail
-
-void FixtureMaterials::Set(const b2Fixture* fixture, MaterialId material)
-{
-    if (material.IsValid())
-    {
-        m_map.Set(fixture, material.index);
-    }
-    else
-    {
-        m_map.Erase(fixture);
-    }
-}
-
-} // namespace cfx
+} // namespace cfx::detail

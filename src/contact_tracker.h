@@ -14,9 +14,9 @@
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
 
-#include "contactfx/detail/pointer_map.h"
+#include "pointer_map.h"
 #include "contactfx/events.h"
-#include "contactfx/materials.h"
+#include "fixture_materials.h"
 #include "contactfx/rules.h"
 
 #include <box2d/b2_math.h>

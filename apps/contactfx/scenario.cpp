@@ -1,0 +1,82 @@
+#include "scenario.h"
+
+#include "contactfx/error.h"
+#include "suggest.h"
+
+#include <vector>
+
+namespace cfx::cli
+{
+
+namespace
+{
+
+const SceneEntry& FindRegisteredScene(const std::string& name)
+{
+    if (const SceneEntry* entry = FindScene(name))
+    {
+        return *entry;
+    }
+    std::vector<std::string> names;
+    for (const SceneEntry& entry : Scenes())
+    {
+        names.emplace_back(entry.name);
+    }
+    const std::string suggestion = DidYouMean(name, names);
+    throw InputError("<command line>", "--scene",
+                     "unknown scene \"" + name + "\"" + (suggestion.empty() ? "" : "; " + suggestion) +
+                         " (scenes: " + SceneNames() + ")");
+}
+
+} // namespace
+
+void Scenario::Step(Simulation& simulation) const
+{
+    if (entry != nullptr)
+    {
+        StepScene(*entry, simulation);
+    }
+    else
+    {
+        simulation.Step();
+    }
+}
+
+void AddSceneOptions(CLI::App& command, RunOptions& options, const std::string& fileHelp)
+{
+    command.add_option("scene", options.scene, fileHelp);
+    command.add_option("--scene", options.sceneName,
+                       "A registered scene with its scripted drive and effects: " + SceneNames());
+}
+
+Scenario SelectScenario(const RunOptions& options)
+{
+    const bool file = !options.scene.empty();
+    const bool named = !options.sceneName.empty();
+    if (file == named)
+    {
+        throw InputError("<command line>", "scene",
+                         file ? "give either a scene file or --scene NAME, not both"
+                              : "give a scene file or --scene NAME (" + SceneNames() + ")");
+    }
+    Scenario scenario;
+    if (named)
+    {
+        scenario.entry = &FindRegisteredScene(options.sceneName);
+        scenario.def = SceneSimulationDef(*scenario.entry, BundledScenesDir());
+        if (EffectsChosen(options))
+        {
+            scenario.def.config = SelectConfig(options);
+        }
+    }
+    else
+    {
+        scenario.def.scene = options.scene;
+        scenario.def.config = SelectConfig(options);
+    }
+    scenario.def.seed = options.seed;
+    scenario.def.hz = static_cast<float>(options.hz);
+    return scenario;
+}
+
+} // namespace cfx::cli

@@ -1,0 +1,35 @@
+// contactfx: the counters an Effects object keeps (Effects::Stats()).
+//
+// Plain data, updated at the end of each Effects::Step. Threading: read on the thread that steps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace cfx
+{
+
+/// Counters of one rule.
+struct RuleStats
+{
+    std::uint32_t contacts = 0;    ///< tracked contacts now
+    std::uint32_t contactsMax = 0; ///< most tracked contacts at once
+    std::uint64_t spawned = 0;     ///< particles emitted in all
+    std::uint32_t spawnedLastStep = 0;
+    float intensityMaxLastStep = 0.0f; ///< largest sample intensity in the last step
+};
+
+/// Counters since creation.
+struct EffectsStats
+{
+    std::uint64_t steps = 0;
+    double time = 0.0;                        ///< s, sum of step times
+    std::vector<std::uint64_t> spawnedByType; ///< per particle type
+    std::vector<RuleStats> rules;             ///< per rule
+    std::uint32_t live = 0;
+    std::uint32_t liveMax = 0;
+    std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture
+    std::uint64_t recycled = 0;           ///< live particles replaced because the pool was full
+};
+
+} // namespace cfx

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Proves that contactfx can be installed and used: installs BUILD_DIR into a temporary prefix, then
+# builds and runs the consumer project tests/consumer (find_package only, never the source tree) and the
+# README's snippet through pkg-config, and runs the installed programs from the prefix.
+# Usage: bash scripts/check-install.sh [BUILD_DIR]   (default build; it must be built)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="$(realpath "${1:-build}")"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+prefix="$work/prefix"
+
+cmake --install "$build" --prefix "$prefix" >/dev/null
+version="$(sed -n 's/^#define CONTACTFX_VERSION_STRING "\(.*\)"$/\1/p' "$prefix/include/contactfx/version.h")"
+echo "installed contactfx $version into a temporary prefix"
+
+# Nothing of the source tree may leak in: build the consumer from a copy outside it.
+cp -r tests/consumer "$work/consumer"
+cmake -S "$work/consumer" -B "$work/consumer-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/consumer-build" >/dev/null
+"$work/consumer-build/consumer" "$version"
+"$work/consumer-build/consumer_components" "$prefix/share/contactfx/scenes/grinder.json"
+echo "find_package(contactfx): ok"
+
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+# shellcheck disable=SC2046
+c++ -O1 "$work/consumer/consumer.cpp" -o "$work/consumer-pc" $(pkg-config --cflags --libs contactfx)
+"$work/consumer-pc" "$version"
+# shellcheck disable=SC2046
+c++ -O1 "$work/consumer/consumer_components.cpp" -o "$work/consumer-components-pc" \
+  $(pkg-config --cflags --libs contactfx-render)
+"$work/consumer-components-pc" "$prefix/share/contactfx/scenes/grinder.json"
+echo "pkg-config: ok"
+
+# The installed programs find the installed scenes wherever the prefix is moved, and name no path of
+# the source or build tree.
+if [ -x "$prefix/bin/contactfx" ]; then
+  mv "$prefix" "$work/moved"
+  for tree in "$PWD" "$build"; do
+    if grep -q -F "$tree" "$work/moved/bin/contactfx"; then
+      echo "check-install: bin/contactfx names $tree" >&2
+      exit 1
+    fi
+  done
+  (cd "$work" && env -u CONTACTFX_SCENES "$work/moved/bin/contactfx" --version)
+  (cd "$work" && env -u CONTACTFX_SCENES "$work/moved/bin/contactfx" demo --seconds 2 --stats "$work/stats.json" >/dev/null)
+  grep -q '"spawned"' "$work/stats.json"
+  echo "installed programs: ok"
+fi

@@ -1,0 +1,29 @@
+// contactfx internal: what the library's own benchmarks and tests may do with a ParticleSystem beyond
+// its public API. Not installed.
+#pragma once
+
+#include "contactfx/particle_system.h"
+#include "spawn.h"
+
+namespace cfx::detail
+{
+
+struct ParticleSystemAccess
+{
+    /// A step without collision for pool particles: gravity, drag, motion and ageing over the same
+    /// arrays. The reference that measures what collision costs (contactfx bench); effects never call it.
+    static void IntegrateWithoutCollision(ParticleSystem& system, float dt, b2Vec2 gravity);
+};
+
+/// Ignores the bodies of a particle system's body-backed particles in spawn point tests.
+class ParticleBodyFilter final : public BodyFilter
+{
+public:
+    explicit ParticleBodyFilter(const ParticleSystem& system) : m_system(system) {}
+    bool Ignore(const b2Body* body) const override { return m_system.IsParticleBody(body); }
+
+private:
+    const ParticleSystem& m_system;
+};
+
+} // namespace cfx::detail

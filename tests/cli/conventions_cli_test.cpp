@@ -1,0 +1,122 @@
+// The conventions every contactfx command follows: --version, help and help COMMAND, and command lines
+// that are not understood (a mistyped command or option, no command at all) answered with what was
+// not understood, the nearest valid name, a pointer at --help and exit code 1.
+#include "cli/cli_support.h"
+#include "contactfx/version.h"
+
+#include <gtest/gtest.h>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+// Exit code 1, every one of `expected` in the output, and nothing run.
+void ExpectRefused(const std::string& args, const std::vector<std::string>& expected)
+{
+    const CliResult result = RunCli(args);
+    EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.output;
+    for (const std::string& text : expected)
+    {
+        EXPECT_NE(result.output.find(text), std::string::npos)
+            << "'" << text << "' missing for '" << args << "' in:\n"
+            << result.output;
+    }
+    EXPECT_EQ(result.output.find("spawned:"), std::string::npos) << "simulated anyway: " << result.output;
+}
+
+} // namespace
+
+TEST(CliConventions, VersionPrintsTheVersionOfTheHeaders)
+{
+    const CliResult result = RunCli("--version");
+    EXPECT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(result.output, std::string("contactfx ") + CONTACTFX_VERSION_STRING + "\n");
+}
+
+TEST(CliConventions, HelpListsTheCommandsLikeDashDashHelp)
+{
+    const CliResult help = RunCli("help");
+    ASSERT_EQ(help.exitCode, 0) << help.output;
+    EXPECT_EQ(help.output, RunCli("--help").output);
+    for (const char* command : {"demo", "run", "render", "validate", "preset", "bench", "help"})
+    {
+        EXPECT_NE(help.output.find(std::string("\n  ") + command + " "), std::string::npos)
+            << command << " not listed in:\n"
+            << help.output;
+    }
+}
+
+TEST(CliConventions, HelpFooterShowsExamplesAndHelpCommand)
+{
+    const CliResult help = RunCli("--help");
+    ASSERT_EQ(help.exitCode, 0) << help.output;
+    for (const char* text :
+         {"contactfx demo --seconds 20 --stats out/demo-stats.json",
+          "contactfx run --scene grinder --events out/grinder.jsonl",
+          "contactfx render --scene rockslide --out out/rockslide.mp4", "contactfx help COMMAND"})
+    {
+        EXPECT_NE(help.output.find(text), std::string::npos) << "'" << text << "' missing in:\n"
+                                                             << help.output;
+    }
+}
+
+TEST(CliConventions, HelpCommandShowsThatCommandsHelp)
+{
+    const CliResult run = RunCli("help run");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.output, RunCli("run --help").output);
+    EXPECT_NE(run.output.find("Usage: contactfx run"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("--seconds"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("Examples:"), std::string::npos) << "the program's footer in: " << run.output;
+
+    const CliResult particles = RunCli("help bench particles");
+    ASSERT_EQ(particles.exitCode, 0) << particles.output;
+    EXPECT_EQ(particles.output, RunCli("bench particles --help").output);
+    EXPECT_NE(particles.output.find("--count"), std::string::npos) << particles.output;
+}
+
+TEST(CliConventions, HelpForAnUnknownCommandIsAnError)
+{
+    ExpectRefused("help nosuch", {"contactfx: error: unknown command 'nosuch'", "demo, run, render",
+                                  "See 'contactfx --help'"});
+    ExpectRefused("help rnu", {"unknown command 'rnu'", "did you mean 'run'?"});
+    ExpectRefused("help bench partcles",
+                  {"unknown command 'partcles' for 'contactfx bench'", "did you mean 'particles'?"});
+}
+
+TEST(CliConventions, MistypedCommandIsNamedWithTheNearestOne)
+{
+    ExpectRefused(
+        "rnu", {"contactfx: error: unknown command 'rnu'", "did you mean 'run'?", "See 'contactfx --help'"});
+    ExpectRefused("rendr --out x.png", {"unknown command 'rendr'", "did you mean 'render'?"});
+    ExpectRefused("bench partcles --count 10", {"unknown command 'partcles' for 'contactfx bench'",
+                                                "did you mean 'particles'?", "See 'contactfx bench --help'"});
+    const CliResult far = RunCli("nosuch");
+    EXPECT_EQ(far.exitCode, 1);
+    EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << "nothing is near: " << far.output;
+}
+
+TEST(CliConventions, MistypedOptionIsNamedWithTheNearestOne)
+{
+    ExpectRefused("run --secnds 2", {"contactfx: error: unknown option '--secnds' for 'contactfx run'",
+                                     "did you mean '--seconds'?", "See 'contactfx run --help'"});
+    ExpectRefused("run --scene grinder --secnds=2",
+                  {"unknown option '--secnds'", "did you mean '--seconds'?"});
+    ExpectRefused("demo --seconds 1 --stat out.json", {"unknown option '--stat'", "did you mean '--stats'?"});
+    ExpectRefused("--verison", {"unknown option '--verison'", "did you mean '--version'?"});
+}
+
+TEST(CliConventions, NoCommandShowsTheShortUsage)
+{
+    const CliResult result = RunCli("");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("contactfx: error: missing command"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("Usage: contactfx [OPTIONS] COMMAND"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("demo, run, render"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("'contactfx --help'"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("A subcommand is required"), std::string::npos) << result.output;
+}
+
+} // namespace cfx::test
