@@ -9,10 +9,17 @@
 // StaticSweep and StaticScan time the static cache alone (src/particles/world_geometry.h): one disc sweep
 // of the kind a colliding step makes against the benchmark scene's chain, and one scan of the world for
 // changes, per iteration.
+//
+// Debris/200 and Debris/1000 run the debris scene (bench/scenes/debris_bench.h) after 180 warm-up steps
+// (the pool is full by then): each iteration is one whole step (world.Step, Effects::Step and the
+// dropper, which costs a few microseconds every third step), with counters world_ms and effects_ms (each
+// part's time per step) and effects_over_world (the ratio of their sums).
 #include "particles/world_geometry.h"
+#include "scenes/debris_bench.h"
 #include "scenes/particle_bench.h"
 
 #include <benchmark/benchmark.h>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -118,6 +125,36 @@ void StaticScan(benchmark::State& state)
     state.counters["builds"] = static_cast<double>(geometry.StaticBuilds());
 }
 
+void Debris(benchmark::State& state)
+{
+    using Clock = std::chrono::steady_clock;
+    constexpr int kDebrisWarmup = 180;
+    cfx::bench::DebrisBenchScene scene(static_cast<std::uint32_t>(state.range(0)));
+    for (int i = 0; i < kDebrisWarmup; ++i)
+    {
+        scene.Step();
+    }
+    double worldSeconds = 0.0, effectsSeconds = 0.0;
+    for (auto _ : state)
+    {
+        const Clock::time_point start = Clock::now();
+        scene.StepWorld();
+        const Clock::time_point worldDone = Clock::now();
+        scene.StepEffects();
+        const Clock::time_point end = Clock::now();
+        scene.Drop();
+        const double world = std::chrono::duration<double>(worldDone - start).count();
+        const double effects = std::chrono::duration<double>(end - worldDone).count();
+        worldSeconds += world;
+        effectsSeconds += effects;
+    }
+    state.counters["world_ms"] = benchmark::Counter(1.0e3 * worldSeconds, benchmark::Counter::kAvgIterations);
+    state.counters["effects_ms"] =
+        benchmark::Counter(1.0e3 * effectsSeconds, benchmark::Counter::kAvgIterations);
+    state.counters["effects_over_world"] = worldSeconds > 0.0 ? effectsSeconds / worldSeconds : 0.0;
+    state.counters["live"] = scene.Fx().Stats().live;
+}
+
 } // namespace
 
 BENCHMARK(StaticScan);
@@ -132,5 +169,6 @@ BENCHMARK(Bodies)
     ->Arg(100000)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(20);
+BENCHMARK(Debris)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -63,8 +63,65 @@ void ContactTracker::Track(b2Contact* contact, bool firstTouch)
     {
         RecordApproach(contact, tracked);
     }
+    tracked.pair = FindOrAddPair(contact, rule);
+    m_pairs[tracked.pair].contacts += 1;
     m_index.Set(contact, Pack(rule, list.size()));
     list.push_back(tracked);
+}
+
+std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
+{
+    // Another tracked contact of the same rule between the same two bodies holds the pair. Every contact
+    // of a body is in its contact list: walking both lists in step, the shorter one ends first, and by
+    // then it has been searched completely.
+    b2Body* bodyA = contact->GetFixtureA()->GetBody();
+    b2Body* bodyB = contact->GetFixtureB()->GetBody();
+    const b2ContactEdge* edgeA = bodyA->GetContactList();
+    const b2ContactEdge* edgeB = bodyB->GetContactList();
+    auto pairOf = [&](const b2ContactEdge* edge, const b2Body* other) -> const TrackedContact*
+    {
+        if (edge->other != other || edge->contact == contact)
+        {
+            return nullptr;
+        }
+        const std::uint64_t* value = m_index.Find(edge->contact);
+        if (value == nullptr || UnpackRule(*value) != rule)
+        {
+            return nullptr;
+        }
+        return &m_byRule[rule.index][UnpackSlot(*value)];
+    };
+    while (edgeA != nullptr && edgeB != nullptr)
+    {
+        if (const TrackedContact* found = pairOf(edgeA, bodyB))
+        {
+            return found->pair;
+        }
+        if (const TrackedContact* found = pairOf(edgeB, bodyA))
+        {
+            return found->pair;
+        }
+        edgeA = edgeA->next;
+        edgeB = edgeB->next;
+    }
+    std::uint32_t slot = 0;
+    if (!m_freePairs.empty())
+    {
+        slot = m_freePairs.back();
+        m_freePairs.pop_back();
+    }
+    else
+    {
+        slot = static_cast<std::uint32_t>(m_pairs.size());
+        m_pairs.emplace_back();
+        // Room for every slot to be free, and for every pair's scrape to end in one step: freeing a pair
+        // or ending its scrape inside a callback never allocates.
+        m_freePairs.reserve(m_pairs.capacity());
+        m_endedScrapes.reserve(m_pairs.capacity());
+    }
+    m_pairs[slot] = TrackedPair{};
+    m_pairs[slot].rule = rule;
+    return slot;
 }
 
 void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
@@ -76,9 +133,18 @@ void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
     }
     std::vector<TrackedContact>& list = m_byRule[UnpackRule(*value).index];
     std::size_t slot = UnpackSlot(*value);
-    if (list[slot].scrapeId != 0)
+    TrackedPair& pair = m_pairs[list[slot].pair];
+    pair.contacts -= 1;
+    if (pair.contacts == 0)
     {
-        m_endedScrapes.push_back(EndScrape(list[slot], reason));
+        // The pair's last contact: its scrape ends with it, naming this contact's fixtures (so that a
+        // destroyed fixture is recognised by MarkDestroyed).
+        if (pair.scrapeId != 0)
+        {
+            m_endedScrapes.push_back(
+                EndScrapeWith(pair, reason, RuleFixtureA(list[slot]), RuleFixtureB(list[slot])));
+        }
+        m_freePairs.push_back(list[slot].pair);
     }
     m_index.Erase(contact);
     if (slot + 1 != list.size())
@@ -153,22 +219,28 @@ const b2Fixture* ContactTracker::RuleFixtureB(const TrackedContact& tracked) con
     return tracked.swapped ? tracked.contact->GetFixtureA() : tracked.contact->GetFixtureB();
 }
 
-EffectEvent ContactTracker::EndScrape(TrackedContact& tracked, ScrapeEnd reason) const
+EffectEvent ContactTracker::EndScrape(TrackedPair& pair, ScrapeEnd reason) const
+{
+    return EndScrapeWith(pair, reason, pair.scrapeFixtureA, pair.scrapeFixtureB);
+}
+
+EffectEvent ContactTracker::EndScrapeWith(TrackedPair& pair, ScrapeEnd reason, const b2Fixture* fixtureA,
+                                          const b2Fixture* fixtureB) const
 {
     EffectEvent event;
     event.type = EffectEventType::scrapeEnded;
     event.end = reason;
-    event.rule = tracked.rule;
-    event.fixtureA = RuleFixtureA(tracked);
-    event.fixtureB = RuleFixtureB(tracked);
-    event.materialA = m_materials.Get(event.fixtureA);
-    event.materialB = m_materials.Get(event.fixtureB);
-    event.id = tracked.scrapeId;
+    event.rule = pair.rule;
+    event.fixtureA = fixtureA;
+    event.fixtureB = fixtureB;
+    event.materialA = m_materials.Get(fixtureA);
+    event.materialB = m_materials.Get(fixtureB);
+    event.id = pair.scrapeId;
     event.step = m_step;
-    event.point = tracked.scrapePoint;
-    event.normal = tracked.scrapeNormal;
-    tracked.scrapeId = 0;
-    tracked.quietTime = 0.0f;
+    event.point = pair.scrapePoint;
+    event.normal = pair.scrapeNormal;
+    pair.scrapeId = 0;
+    pair.quietTime = 0.0f;
     return event;
 }
 

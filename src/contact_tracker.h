@@ -6,18 +6,27 @@
 // world is locked while they run. Every callback is forwarded, unchanged, to the application's own
 // listener when it has one, after contactfx has recorded it.
 //
+// Contacts of one rule between the same two bodies form one body pair (TrackedPair): one sliding contact
+// however many fixtures, chain segments or manifold points it spans. The pair carries what must survive
+// a contact moving from one segment to the next: the fraction of a particle owed (rate emission) and the
+// scrape going on (events.h). A pair lives while at least one of its contacts is tracked; a contact finds
+// its pair when tracking begins by walking the shorter of its two bodies' Box2D contact lists for another
+// tracked contact of the same rule between the same bodies (no map keyed by addresses, nothing iterated
+// in address order). Pair slots are reused from a free list, in an order fixed by Box2D's callback order.
+//
 // A contact leaves tracking when it ends (EndContact: also sent by Box2D when a fixture or body is
 // destroyed, a body disabled, or a filter change stops the pair from colliding) and when one of its
 // fixtures becomes a sensor (found by Prune() after the step; PreSolve brings it back if the fixture
 // becomes solid again while still touching). Nothing dangles: a tracked b2Contact* is always alive.
+// When a pair's last contact leaves, the pair's scrape ends there (reported first in the next step).
 //
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
 
-#include "pointer_map.h"
 #include "contactfx/events.h"
-#include "fixture_materials.h"
 #include "contactfx/rules.h"
+#include "fixture_materials.h"
+#include "pointer_map.h"
 
 #include <box2d/b2_math.h>
 #include <box2d/b2_world_callbacks.h>
@@ -37,19 +46,32 @@ struct TrackedContact
     RuleId rule;
     bool swapped = false;        ///< fixture A carries the rule's materialB (so A and B are swapped)
     std::uint32_t id = 0;        ///< unique per tracking span, from 1, in order of tracking
+    std::uint32_t pair = 0;      ///< slot of its body pair (ContactTracker::Pair)
     std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
-    float emissionCarry[2] = {}; ///< fraction of a particle owed per manifold point (rate emission)
 
-    // Events (events.h).
-    std::uint32_t scrapeId = 0;        ///< id of the scrape going on, 0 when none
-    float quietTime = 0.0f;            ///< s the intensity has stayed at or below the threshold
-    b2Vec2 scrapePoint{0.0f, 0.0f};    ///< m, world: where the scrape was last reported
-    b2Vec2 scrapeNormal{0.0f, 0.0f};   ///< unit, rule's A toward B, as last reported
+    // Impacts (events.h): per contact, merged per body pair by the emitter.
     bool impactPending = false;        ///< began touching since the last Effects step
     float approachSpeed = 0.0f;        ///< m/s along the normal at BeginContact, before the solver
     b2Vec2 approachPoint{0.0f, 0.0f};  ///< m, world: the manifold point approaching fastest
     b2Vec2 approachNormal{0.0f, 0.0f}; ///< unit, from the contact's fixture A to fixture B
+};
+
+/// The tracked contacts of one rule between the same two bodies: one sliding contact, whatever the
+/// tessellation. Lives while `contacts` > 0.
+struct TrackedPair
+{
+    RuleId rule;
+    std::uint32_t contacts = 0; ///< tracked contacts that belong to it; 0: a free slot
+    float emissionCarry = 0.0f; ///< fraction of a particle owed (rate emission), kept across contacts
+
+    // The scrape (events.h), one per pair.
+    std::uint32_t scrapeId = 0;                ///< id of the scrape going on, 0 when none
+    float quietTime = 0.0f;                    ///< s the intensity has stayed at or below the threshold
+    b2Vec2 scrapePoint{0.0f, 0.0f};            ///< m, world: where the scrape was last reported
+    b2Vec2 scrapeNormal{0.0f, 0.0f};           ///< unit, rule's A toward B, as last reported
+    const b2Fixture* scrapeFixtureA = nullptr; ///< rule's materialA fixture of the point last reported
+    const b2Fixture* scrapeFixtureB = nullptr; ///< rule's materialB fixture of the point last reported
 };
 
 class ContactTracker final : public b2ContactListener
@@ -84,8 +106,16 @@ public:
     /// Scrapes that ended since the last ClearEndedScrapes(), in the order they ended.
     std::span<const EffectEvent> EndedScrapes() const { return m_endedScrapes; }
     void ClearEndedScrapes() { m_endedScrapes.clear(); }
-    /// Ends the scrape of a tracked contact (the emitter's decision: asleep or below the threshold).
-    EffectEvent EndScrape(TrackedContact& tracked, ScrapeEnd reason) const;
+    /// The body pair in `slot` (TrackedContact::pair).
+    TrackedPair& Pair(std::uint32_t slot) { return m_pairs[slot]; }
+    const TrackedPair& Pair(std::uint32_t slot) const { return m_pairs[slot]; }
+    /// Number of pair slots, used and free: every TrackedContact::pair is below it.
+    std::size_t PairSlots() const { return m_pairs.size(); }
+    /// Pairs with at least one tracked contact.
+    std::size_t PairCount() const { return m_pairs.size() - m_freePairs.size(); }
+    /// Ends the scrape of a pair (the emitter's decision: asleep or below the threshold), naming the
+    /// fixtures last reported.
+    EffectEvent EndScrape(TrackedPair& pair, ScrapeEnd reason) const;
     /// A fresh event id (scrapes and impacts); never 0, never reused.
     std::uint32_t NewEventId() { return m_nextEventId++; }
     const FixtureMaterials& Materials() const { return m_materials; }
@@ -105,12 +135,17 @@ private:
     void Track(b2Contact* contact, bool firstTouch);
     void Untrack(b2Contact* contact, ScrapeEnd reason);
     void RecordApproach(b2Contact* contact, TrackedContact& tracked);
+    std::uint32_t FindOrAddPair(b2Contact* contact, RuleId rule);
+    EffectEvent EndScrapeWith(TrackedPair& pair, ScrapeEnd reason, const b2Fixture* fixtureA,
+                              const b2Fixture* fixtureB) const;
 
     const RuleTable& m_rules;
     const FixtureMaterials& m_materials;
     b2ContactListener* m_forward = nullptr;
     std::vector<std::vector<TrackedContact>> m_byRule;
-    detail::PointerMap m_index; // contact -> (rule << 32) | slot
+    detail::PointerMap m_index;             // contact -> (rule << 32) | slot
+    std::vector<TrackedPair> m_pairs;       // by slot; slots with contacts == 0 are free
+    std::vector<std::uint32_t> m_freePairs; // free slots, reused last freed first
     std::vector<EffectEvent> m_endedScrapes;
     std::uint32_t m_nextId = 1;
     std::uint32_t m_nextEventId = 1;

@@ -93,7 +93,7 @@ struct Effects::Internals
 
 Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
-      m_particles(world, m_config.particleTypes, m_config.budget),
+      m_particles(world, m_config.particleTypes, m_config.budget, def.particles),
       m_internals(std::make_unique<Internals>(m_rules, m_config, def)), m_eventListener(def.eventListener)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
@@ -156,6 +156,9 @@ void Effects::Step(float dt)
     m_stats.live = m_particles.Count();
     m_stats.liveMax = std::max(m_stats.liveMax, m_stats.live);
     m_stats.recycled = m_particles.Recycled();
+    m_stats.crushed = m_particles.Counters().crushed;
+    m_stats.particleStepsInside = m_particles.Counters().stepsInside;
+    m_stats.crossings = m_particles.Counters().crossings;
     if (m_eventListener != nullptr)
     {
         for (const EffectEvent& event : m_events)

@@ -49,7 +49,7 @@ ContactSample SampleAt(const b2Contact* contact, b2Vec2 point, b2Vec2 normal)
 
 } // namespace
 
-// Everything the per-contact work needs, for one rule.
+// Everything the per-pair work needs, for one rule.
 struct Emitter::RuleContext
 {
     b2World& world;
@@ -62,6 +62,7 @@ struct Emitter::RuleContext
     const ParticleTypeDef& type;
     ParticleTypeId typeId;
     RuleStats& ruleStats;
+    std::span<TrackedContact> contacts;
     float dt;
 };
 
@@ -76,107 +77,232 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed) : m_random(see
 void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker,
                    ParticleSystem& particles, EffectsStats& stats, std::vector<EffectEvent>& events, float dt)
 {
+    if (m_pairSteps.size() < tracker.PairSlots())
+    {
+        m_pairSteps.resize(tracker.PairSlots());
+    }
     for (int ruleIndex = 0; ruleIndex < tracker.RuleCount(); ++ruleIndex)
     {
         const RuleId ruleId{static_cast<std::uint16_t>(ruleIndex)};
         const RuleDef& rule = config.rules[ruleIndex];
         const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
-        RuleContext context{
-            world, tracker, particles, ParticleBodyFilter(particles), stats, events, rule,
-            config.particleTypes[typeId.index], typeId, ruleStats, dt};
         std::span<TrackedContact> contacts = tracker.Contacts(ruleId);
+        RuleContext context{world,  tracker,   particles, ParticleBodyFilter(particles),
+                            stats,  events,    rule,      config.particleTypes[typeId.index],
+                            typeId, ruleStats, contacts,  dt};
         ruleStats.contacts = static_cast<std::uint32_t>(contacts.size());
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
         ruleStats.intensityMaxLastStep = 0.0f;
-        for (TrackedContact& tracked : contacts)
+
+        // Gather the samples of every pair (in the order of each pair's first contact), then emit pair by
+        // pair.
+        ++m_stamp;
+        m_order.clear();
+        m_samples.clear();
+        for (std::uint32_t i = 0; i < contacts.size(); ++i)
         {
-            UpdateContact(context, tracked);
+            Gather(context, i);
+        }
+        for (std::uint32_t slot : m_order)
+        {
+            UpdatePair(context, slot);
         }
     }
 }
 
-void Emitter::UpdateContact(RuleContext& context, TrackedContact& tracked)
+void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
 {
     const RuleDef& rule = context.rule;
-    b2Contact* contact = tracked.contact;
-    const b2Body* bodyA = contact->GetFixtureA()->GetBody();
-    const b2Body* bodyB = contact->GetFixtureB()->GetBody();
+    TrackedContact& tracked = context.contacts[contactIndex];
+    PairStep& step = m_pairSteps[tracked.pair];
+    if (step.stamp != m_stamp)
+    {
+        step = PairStep{};
+        step.stamp = m_stamp;
+        m_order.push_back(tracked.pair);
+    }
     if (tracked.impactPending)
     {
         tracked.impactPending = false;
-        if (tracked.approachSpeed >= rule.impactThreshold)
+        if (tracked.approachSpeed >= rule.impactThreshold &&
+            (step.impactContact == kNone || tracked.approachSpeed > step.impactSpeed))
         {
-            Impact(context, tracked);
+            step.impactContact = contactIndex;
+            step.impactSpeed = tracked.approachSpeed;
         }
     }
-    if (Asleep(bodyA) || Asleep(bodyB))
+    b2Contact* contact = tracked.contact;
+    if (Asleep(contact->GetFixtureA()->GetBody()) || Asleep(contact->GetFixtureB()->GetBody()))
     {
-        if (tracked.scrapeId != 0)
-        {
-            context.events.push_back(context.tracker.EndScrape(tracked, ScrapeEnd::asleep));
-        }
+        step.asleep = true;
         return;
     }
-
-    // Every sampled manifold point emits on its own; the scrape follows the most intense one.
-    int pointCount = contact->GetManifold()->pointCount;
-    if (!contact->IsEnabled())
+    int pointCount = contact->IsEnabled() ? contact->GetManifold()->pointCount : 0;
+    for (int i = 0; i < pointCount; ++i)
     {
-        pointCount = 0;
+        step.impulse += tracked.normalImpulse[i]; // the pressure counts every point, sampled or not
     }
     if (rule.intensity.points == ManifoldPoints::first)
     {
         pointCount = std::min(pointCount, 1);
     }
-    b2WorldManifold manifold;
-    if (pointCount > 0)
+    if (pointCount <= 0)
     {
-        contact->GetWorldManifold(&manifold);
+        return;
     }
-    ContactSample loudest;
-    float loudestIntensity = -1.0f;
-    float impulseSum = 0.0f;
+    b2WorldManifold manifold;
+    contact->GetWorldManifold(&manifold);
     for (int i = 0; i < pointCount; ++i)
     {
-        ContactSample sample = SampleAt(contact, manifold.points[i], manifold.normal);
-        sample.normalForce = tracked.normalImpulse[i] / context.dt;
-        impulseSum += tracked.normalImpulse[i];
-        const float intensity = ComputeIntensity(sample, rule.intensity);
-        context.ruleStats.intensityMaxLastStep = std::max(context.ruleStats.intensityMaxLastStep, intensity);
-        if (intensity > loudestIntensity)
+        Sample sample;
+        sample.sample = SampleAt(contact, manifold.points[i], manifold.normal);
+        sample.sample.normalForce = tracked.normalImpulse[i] / context.dt;
+        sample.ownIntensity = ComputeIntensity(sample.sample, rule.intensity);
+        sample.impulse = tracked.normalImpulse[i];
+        sample.contact = contactIndex;
+        const auto index = static_cast<std::uint32_t>(m_samples.size());
+        m_samples.push_back(sample);
+        if (step.last == kNone)
         {
-            loudestIntensity = intensity;
-            loudest = sample;
+            step.first = index;
         }
-        if (!(intensity > rule.threshold))
+        else
         {
-            continue;
+            m_samples[step.last].next = index;
         }
-        int count = 1;
-        if (rule.emission == EmissionMode::rate)
-        {
-            const float rate = std::min(rule.maxRate, rule.ratePerIntensity * (intensity - rule.threshold));
-            const float owed = tracked.emissionCarry[i] + rate * context.dt;
-            count = static_cast<int>(std::floor(owed));
-            tracked.emissionCarry[i] = owed - static_cast<float>(count);
-        }
-        SpawnParticles(context, tracked, sample, intensity, count);
+        step.last = index;
+        step.sampledImpulse += sample.impulse;
     }
-    UpdateScrape(context, tracked, loudest, std::max(loudestIntensity, 0.0f), impulseSum);
 }
 
-void Emitter::UpdateScrape(RuleContext& context, TrackedContact& tracked, const ContactSample& loudest,
-                           float intensity, float impulseSum)
+void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
+{
+    const RuleDef& rule = context.rule;
+    TrackedPair& pair = context.tracker.Pair(pairSlot);
+    const PairStep& step = m_pairSteps[pairSlot];
+    if (step.impactContact != kNone)
+    {
+        Impact(context, context.contacts[step.impactContact], step.impulse);
+    }
+    if (step.asleep)
+    {
+        if (pair.scrapeId != 0)
+        {
+            context.events.push_back(context.tracker.EndScrape(pair, ScrapeEnd::asleep));
+        }
+        return;
+    }
+
+    // The pair's intensity: every sample pressed by the pair's whole normal force, weighted by its own
+    // normal impulse (plain mean when nothing pressed).
+    const float pairForce = step.impulse / context.dt;
+    float weighted = 0.0f;
+    float plain = 0.0f;
+    int samples = 0;
+    const Sample* loudest = nullptr;
+    for (std::uint32_t i = step.first; i != kNone; i = m_samples[i].next)
+    {
+        Sample& sample = m_samples[i];
+        sample.sample.normalForce = pairForce;
+        sample.intensity = ComputeIntensity(sample.sample, rule.intensity);
+        weighted += sample.impulse * sample.intensity;
+        plain += sample.intensity;
+        ++samples;
+        if (loudest == nullptr || sample.intensity > loudest->intensity)
+        {
+            loudest = &sample;
+        }
+    }
+    float intensity = 0.0f;
+    if (step.sampledImpulse > 0.0f)
+    {
+        intensity = weighted / step.sampledImpulse;
+    }
+    else if (samples > 0)
+    {
+        intensity = plain / static_cast<float>(samples);
+    }
+    context.ruleStats.intensityMaxLastStep = std::max(context.ruleStats.intensityMaxLastStep, intensity);
+
+    if (rule.emission == EmissionMode::perStep)
+    {
+        // The tutorial's: one particle per sample per step above the threshold, per contact.
+        for (std::uint32_t i = step.first; i != kNone; i = m_samples[i].next)
+        {
+            const Sample& sample = m_samples[i];
+            context.ruleStats.intensityMaxLastStep =
+                std::max(context.ruleStats.intensityMaxLastStep, sample.ownIntensity);
+            if (sample.ownIntensity > rule.threshold)
+            {
+                SpawnParticles(context, context.contacts[sample.contact], sample.sample, sample.ownIntensity,
+                               1);
+            }
+        }
+    }
+    else
+    {
+        EmitRate(context, pair, step, intensity);
+    }
+    UpdateScrape(context, pair, loudest, intensity, step.impulse);
+}
+
+void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& step, float intensity)
+{
+    const RuleDef& rule = context.rule;
+    if (!(intensity > rule.threshold))
+    {
+        return;
+    }
+    const float rate = std::min(rule.maxRate, rule.ratePerIntensity * (intensity - rule.threshold));
+    const float owed = pair.emissionCarry + rate * context.dt;
+    const int count = static_cast<int>(std::floor(owed));
+    pair.emissionCarry = owed - static_cast<float>(count);
+    if (count <= 0 || step.first == kNone)
+    {
+        return;
+    }
+    // Shared out over the samples by normal impulse (equally when nothing pressed): systematic sampling
+    // from one random offset, so each sample gets the floor or the ceiling of its share.
+    const bool byImpulse = step.sampledImpulse > 0.0f;
+    float total = 0.0f;
+    for (std::uint32_t i = step.first; i != kNone; i = m_samples[i].next)
+    {
+        total += byImpulse ? m_samples[i].impulse : 1.0f;
+    }
+    const float offset = m_random.NextFloat();
+    float cumulative = 0.0f;
+    int given = 0;
+    for (std::uint32_t i = step.first; i != kNone; i = m_samples[i].next)
+    {
+        const Sample& sample = m_samples[i];
+        cumulative += byImpulse ? sample.impulse : 1.0f;
+        int upTo = count;
+        if (sample.next != kNone)
+        {
+            upTo = std::min(
+                count, static_cast<int>(std::floor(cumulative / total * static_cast<float>(count) + offset)));
+        }
+        const int share = upTo - given;
+        given = std::max(given, upTo);
+        if (share > 0)
+        {
+            SpawnParticles(context, context.contacts[sample.contact], sample.sample, intensity, share);
+        }
+    }
+}
+
+void Emitter::UpdateScrape(RuleContext& context, TrackedPair& pair, const Sample* loudest, float intensity,
+                           float impulseSum)
 {
     EffectEvent event;
     if (intensity > context.rule.threshold)
     {
-        tracked.quietTime = 0.0f;
-        if (tracked.scrapeId == 0)
+        pair.quietTime = 0.0f;
+        if (pair.scrapeId == 0)
         {
-            tracked.scrapeId = context.tracker.NewEventId();
+            pair.scrapeId = context.tracker.NewEventId();
             event.type = EffectEventType::scrapeBegan;
         }
         else
@@ -184,12 +310,12 @@ void Emitter::UpdateScrape(RuleContext& context, TrackedContact& tracked, const 
             event.type = EffectEventType::scrapeChanged;
         }
     }
-    else if (tracked.scrapeId != 0)
+    else if (pair.scrapeId != 0)
     {
-        tracked.quietTime += context.dt;
-        if (tracked.quietTime >= context.rule.scrapeEndDelay)
+        pair.quietTime += context.dt;
+        if (pair.quietTime >= context.rule.scrapeEndDelay)
         {
-            context.events.push_back(context.tracker.EndScrape(tracked, ScrapeEnd::belowThreshold));
+            context.events.push_back(context.tracker.EndScrape(pair, ScrapeEnd::belowThreshold));
             return;
         }
         event.type = EffectEventType::scrapeChanged;
@@ -198,19 +324,30 @@ void Emitter::UpdateScrape(RuleContext& context, TrackedContact& tracked, const 
     {
         return;
     }
-    FillContactFields(context, tracked, event);
-    event.id = tracked.scrapeId;
-    event.point = loudest.point;
-    event.normal = tracked.swapped ? -loudest.normal : loudest.normal;
+    if (loudest != nullptr)
+    {
+        const TrackedContact& tracked = context.contacts[loudest->contact];
+        pair.scrapeFixtureA = context.tracker.RuleFixtureA(tracked);
+        pair.scrapeFixtureB = context.tracker.RuleFixtureB(tracked);
+        pair.scrapePoint = loudest->sample.point;
+        pair.scrapeNormal = tracked.swapped ? -loudest->sample.normal : loudest->sample.normal;
+        event.tangentialSpeed = TangentialVelocity(loudest->sample).Length();
+    }
+    event.rule = pair.rule;
+    event.fixtureA = pair.scrapeFixtureA;
+    event.fixtureB = pair.scrapeFixtureB;
+    event.materialA = context.tracker.Materials().Get(event.fixtureA);
+    event.materialB = context.tracker.Materials().Get(event.fixtureB);
+    event.step = context.tracker.Step();
+    event.id = pair.scrapeId;
+    event.point = pair.scrapePoint;
+    event.normal = pair.scrapeNormal;
     event.intensity = intensity;
-    event.tangentialSpeed = TangentialVelocity(loudest).Length();
     event.normalImpulse = impulseSum;
-    tracked.scrapePoint = event.point;
-    tracked.scrapeNormal = event.normal;
     context.events.push_back(event);
 }
 
-void Emitter::Impact(RuleContext& context, TrackedContact& tracked)
+void Emitter::Impact(RuleContext& context, const TrackedContact& tracked, float impulseSum)
 {
     EffectEvent event;
     event.type = EffectEventType::impact;
@@ -219,7 +356,7 @@ void Emitter::Impact(RuleContext& context, TrackedContact& tracked)
     event.point = tracked.approachPoint;
     event.normal = tracked.swapped ? -tracked.approachNormal : tracked.approachNormal;
     event.approachSpeed = tracked.approachSpeed;
-    event.normalImpulse = tracked.normalImpulse[0] + tracked.normalImpulse[1];
+    event.normalImpulse = impulseSum;
     context.events.push_back(event);
 
     const float burst =
@@ -263,23 +400,24 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     b2Vec2 slip = surfaceIsA ? sample.velocityB - sample.velocityA : sample.velocityA - sample.velocityB;
     slip -= b2Dot(slip, surfaceNormal) * surfaceNormal;
 
-    SpawnPoint start;
-    if (rule.placement == SpawnPlacement::tutorialDrop)
+    SpawnQuery query;
+    query.surface = surfaceIsA ? fixtureA : fixtureB;
+    query.surfaceChild = surfaceIsA ? contact->GetChildIndexA() : contact->GetChildIndexB();
+    query.point = sample.point;
+    query.normal = surfaceNormal;
+    query.slip = slip;
+    query.radius = type.radius;
+    const SpawnPoint start = rule.placement == SpawnPlacement::tutorialDrop
+                                 ? FindTutorialDropPoint(context.world, query, &context.particleBodies)
+                                 : FindSpawnPoint(context.world, query, &context.particleBodies);
+    if (!start.outside)
     {
-        start = TutorialDropPoint(context.world, sample.point);
+        // No free start near the contact (a pile, a crevice): never inside a solid, so not at all.
+        context.stats.spawnRejected += static_cast<std::uint64_t>(count);
+        return;
     }
-    else
-    {
-        SpawnQuery query;
-        query.surface = surfaceIsA ? fixtureA : fixtureB;
-        query.surfaceChild = surfaceIsA ? contact->GetChildIndexA() : contact->GetChildIndexB();
-        query.point = sample.point;
-        query.normal = surfaceNormal;
-        query.slip = slip;
-        query.radius = type.radius;
-        start = FindSpawnPoint(context.world, query, &context.particleBodies);
-    }
-    if (IsInsideSolid(context.world, start.position, &context.particleBodies))
+    // A check of its own on the particle's actual disc: stays 0 while the placements keep their promise.
+    if (!DiscIsClear(context.world, start.position, type.radius, &context.particleBodies))
     {
         context.stats.spawnedInsideSolid += static_cast<std::uint64_t>(count);
     }

@@ -1,13 +1,32 @@
 // contactfx internal: from tracked contacts to particles, once per step.
 //
-// For every tracked contact with manifold points: one sample per manifold point (or only the first,
-// per the rule's model) -> intensity -> a count of particles (one per step in the tutorial's mode, or a
-// rate accumulated across steps so the count does not depend on the step rate) -> one start point per
-// sample, found outside both surfaces -> velocities and lives per particle. The same pass decides the
-// contact's scrape (began / changed / ended) and reports its impact (with a burst of particles) when it
-// began touching fast enough since the last step. Randomness comes from one
-// seeded generator drawn in a fixed order (rules, then contacts in tracking order, then points), so
-// the same inputs and seed give the same particles bit for bit.
+// The unit of emission is the body pair (TrackedPair): all tracked contacts of one rule between the same
+// two bodies, with all their manifold points, are one sliding contact. Cutting a ground into boxes, chain
+// segments or more manifold points must not multiply the particles of one block sliding over it, so per
+// pair and step:
+//
+//   samples  every sampled manifold point of every contact of the pair (only point 0 of each contact
+//            with the `first` model); each gets the pair's whole normal force (every manifold point's
+//            impulse over the step time) as its pressure, since splitting one load over more points or
+//            sampling fewer of them must not change it;
+//   intensity the normal-impulse-weighted mean of the samples' intensities (the plain mean when no point
+//            pressed): where the pair presses, it rubs; the number of points does not change it;
+//   count    rate = ratePerIntensity * (intensity - threshold), capped at maxRate, integrated with the
+//            fraction owed carried in the pair, so it survives the contact moving from one segment to
+//            the next;
+//   where    the count is shared out over the samples by their normal impulse (systematic sampling:
+//            one random offset, each sample gets the floor or the ceiling of its share), and each sample
+//            with particles finds one start point outside every solid (spawn.h).
+//
+// The tutorial's `perStep` emission stays per contact by definition: one particle per sample per step,
+// with the sample's own intensity, so it grows with the manifold points and segments as the tutorial's
+// does. Scrapes (one per pair) and impacts (at most one per pair and step: the fastest contact that began
+// touching) follow the pair too (events.h). When no start point outside every solid exists near a
+// sample (piles, crevices), its particles are not spawned and are counted as rejected.
+//
+// Determinism: one seeded generator drawn in a fixed order: rules, pairs in the order of their first
+// contact in tracking order, samples, particles. Allocation: the scratch arrays only grow, so a warmed-up
+// world emits without touching the heap.
 #pragma once
 
 #include "contact_tracker.h"
@@ -29,17 +48,46 @@ public:
     /// `config` must be valid (Validate) and is the one Emit will be given.
     Emitter(const EffectsConfig& config, std::uint64_t seed);
 
-    /// For every tracked contact of every rule: emits into `particles`, appends scrape and impact events
-    /// to `events` (events.h gives the order), updates `stats`.
+    /// For every body pair of every rule: emits into `particles`, appends scrape and impact events to
+    /// `events` (events.h gives the order), updates `stats`.
     void Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker, ParticleSystem& particles,
               EffectsStats& stats, std::vector<EffectEvent>& events, float dt);
 
 private:
     struct RuleContext;
-    void UpdateContact(RuleContext& context, TrackedContact& tracked);
-    void UpdateScrape(RuleContext& context, TrackedContact& tracked, const ContactSample& loudest,
-                      float intensity, float impulseSum);
-    void Impact(RuleContext& context, TrackedContact& tracked);
+
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu; // no sample, no contact
+
+    // One sampled manifold point of this step.
+    struct Sample
+    {
+        ContactSample sample;       // normalForce: the pair's total
+        std::uint32_t contact = 0;  // index in the rule's tracked contacts
+        std::uint32_t next = kNone; // next sample of the same pair, kNone at the end
+        float impulse = 0.0f;       // N*s, this point's normal impulse
+        float ownIntensity = 0.0f;  // with the point's own normal force (perStep emission)
+        float intensity = 0.0f;     // with the pair's normal force
+    };
+
+    // What one pair gathered this step; valid while `stamp` is the step's.
+    struct PairStep
+    {
+        std::uint64_t stamp = 0;
+        std::uint32_t first = kNone; // first sample, kNone when none
+        std::uint32_t last = kNone;
+        std::uint32_t impactContact = kNone; // fastest contact that began touching, kNone when none
+        float impactSpeed = 0.0f;
+        float impulse = 0.0f;        // N*s, sum over every manifold point of the pair's contacts
+        float sampledImpulse = 0.0f; // N*s, sum over the sampled points: the weights' total
+        bool asleep = false;
+    };
+
+    void Gather(RuleContext& context, std::uint32_t contactIndex);
+    void UpdatePair(RuleContext& context, std::uint32_t pairSlot);
+    void EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& step, float intensity);
+    void UpdateScrape(RuleContext& context, TrackedPair& pair, const Sample* loudest, float intensity,
+                      float impulseSum);
+    void Impact(RuleContext& context, const TrackedContact& tracked, float impulseSum);
     static void FillContactFields(const RuleContext& context, const TrackedContact& tracked,
                                   EffectEvent& event);
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
@@ -47,6 +95,10 @@ private:
 
     Random m_random;
     std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
+    std::uint64_t m_stamp = 0;               // one per rule per Emit
+    std::vector<PairStep> m_pairSteps;       // by pair slot
+    std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
+    std::vector<Sample> m_samples;           // this rule's samples
 };
 
 } // namespace cfx::detail

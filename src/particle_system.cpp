@@ -6,6 +6,7 @@
 #include "pointer_map.h"
 
 #include "particles/motion.h"
+#include "particles/particle_check.h"
 #include "particles/workers.h"
 #include "particles/world_geometry.h"
 
@@ -79,6 +80,9 @@ struct ParticleSystem::Impl
     std::vector<float> positionX, positionY, velocityX, velocityY, life;
     std::vector<std::uint16_t> type;
     std::vector<float> clearance;
+    // Only with checkParticles: each particle's position at the start of the step, and the check.
+    std::vector<float> startX, startY;
+    particles::ParticleCheck check;
     // Cold: bodies of body-backed particles (empty when no type is body-backed).
     std::vector<b2Body*> body;
     detail::PointerMap bodySet;
@@ -103,6 +107,8 @@ struct ParticleSystem::Impl
                                      velocityX.data(), velocityY.data(),
                                      life.data(),      type.data(),
                                      clearance.data(), anyBodyBacked ? body.data() : nullptr,
+                                     startX.empty() ? nullptr : startX.data(),
+                                     startX.empty() ? nullptr : startY.data(),
                                      capacity,         head};
     }
 
@@ -195,6 +201,11 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     impl.life.resize(m_capacity);
     impl.type.resize(m_capacity);
     impl.clearance.resize(m_capacity);
+    if (options.checkParticles)
+    {
+        impl.startX.resize(m_capacity);
+        impl.startY.resize(m_capacity);
+    }
     if (impl.anyBodyBacked)
     {
         impl.body.assign(m_capacity, nullptr);
@@ -291,12 +302,14 @@ struct StepJob
     particles::StepTrust trust;
     std::array<std::uint32_t, kMaxThreads + 1> begin;
     std::array<std::uint32_t, kMaxThreads> kept;
+    std::array<particles::StepCounts, kMaxThreads> counts;
 
     static void Run(void* context, unsigned part)
     {
         auto& job = *static_cast<StepJob*>(context);
         job.kept[part] = particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust,
-                                                 job.begin[part], job.begin[part + 1], job.dead[part]);
+                                                 job.begin[part], job.begin[part + 1], job.dead[part],
+                                                 job.counts[part]);
     }
 };
 
@@ -347,6 +360,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
                 dt,
                 trust,
                 {},
+                {},
                 {}};
     for (unsigned part = 0; part <= parts; ++part)
     {
@@ -374,6 +388,19 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         impl.dead[part].clear();
     }
     m_count = total;
+    for (unsigned part = 0; part < parts; ++part)
+    {
+        m_counters.crushed += job.counts[part].crushed;
+    }
+    if (!impl.startX.empty() && scan)
+    {
+        particles::CheckCounts found;
+        const detail::ParticleBodyFilter particleBodies(*this);
+        impl.check.Check(impl.world, impl.Arrays(m_capacity), impl.steps.data(), m_count,
+                         impl.anyBodyBacked ? &particleBodies : nullptr, found);
+        m_counters.stepsInside += found.inside;
+        m_counters.crossings += found.crossings;
+    }
 }
 
 void ParticleSystem::InvalidateStaticGeometry()
@@ -427,6 +454,7 @@ std::size_t ParticleSystem::MemoryBytes() const
     const Impl& impl = *m_impl;
     std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
     bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
+    bytes += (impl.startX.capacity() + impl.startY.capacity()) * sizeof(float);
     return bytes + impl.geometry.Bytes();
 }
 

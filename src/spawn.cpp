@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
@@ -16,43 +18,24 @@ namespace cfx
 namespace
 {
 
-class PointQuery final : public b2QueryCallback
-{
-public:
-    PointQuery(b2Vec2 point, const BodyFilter* ignore) : m_point(point), m_ignore(ignore) {}
-
-    bool ReportFixture(b2Fixture* fixture) override
-    {
-        if (fixture->IsSensor() || (m_ignore != nullptr && m_ignore->Ignore(fixture->GetBody())))
-        {
-            return true;
-        }
-        if (fixture->TestPoint(m_point))
-        {
-            inside = true;
-            return false;
-        }
-        return true;
-    }
-
-    bool inside = false;
-
-private:
-    b2Vec2 m_point;
-    const BodyFilter* m_ignore;
-};
-
-// Whether a disc overlaps any solid fixture (skins of polygons and edges included).
+// Whether a disc is inside any solid fixture: it overlaps one (skins of polygons and edges included), or
+// its centre is behind the one-sided edge or chain nearest to it. One-sided edges and chains collide on
+// their front (right) side only, so whatever is behind them is inside the solid they bound. Near a vertex
+// shared by two edges the sum of their normals decides (the side that matters at a convex corner is the
+// intersection of the two back half-planes, at a concave one their union; the summed normal gives both).
 class DiscQuery final : public b2QueryCallback
 {
 public:
-    DiscQuery(b2Vec2 center, float radius, const BodyFilter* ignore) : m_ignore(ignore)
+    DiscQuery(b2Vec2 center, float radius, const BodyFilter* ignore)
+        : m_ignore(ignore), m_center(center), m_behindReach(radius + kBehindReach)
     {
         m_disc.m_radius = radius;
         m_disc.m_p = center;
         m_discProxy.Set(&m_disc, 0);
         m_box.lowerBound = center - b2Vec2(radius, radius);
         m_box.upperBound = center + b2Vec2(radius, radius);
+        m_reachBox.lowerBound = center - b2Vec2(m_behindReach, m_behindReach);
+        m_reachBox.upperBound = center + b2Vec2(m_behindReach, m_behindReach);
     }
 
     bool ReportFixture(b2Fixture* fixture) override
@@ -62,39 +45,127 @@ public:
             return true;
         }
         const b2Shape* shape = fixture->GetShape();
+        const b2Transform& transform = fixture->GetBody()->GetTransform();
         for (int child = 0; child < shape->GetChildCount(); ++child)
         {
-            if (!b2TestOverlap(fixture->GetAABB(child), m_box))
+            const b2AABB& box = fixture->GetAABB(child);
+            if (!b2TestOverlap(box, m_reachBox))
             {
                 continue;
             }
-            b2DistanceInput input;
-            input.proxyA.Set(shape, child);
-            input.proxyB = m_discProxy;
-            input.transformA = fixture->GetBody()->GetTransform();
-            input.transformB.SetIdentity();
-            input.useRadii = true;
-            b2SimplexCache cache;
-            cache.count = 0;
-            b2DistanceOutput output;
-            b2Distance(&output, &cache, &input);
-            if (output.distance <= 0.0f)
+            if (b2TestOverlap(box, m_box) && Overlaps(shape, child, transform))
             {
                 overlaps = true;
                 return false;
+            }
+            if (shape->GetType() == b2Shape::e_chain)
+            {
+                b2EdgeShape edge;
+                static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+                NoteOneSided(edge, transform);
+            }
+            else if (shape->GetType() == b2Shape::e_edge &&
+                     static_cast<const b2EdgeShape*>(shape)->m_oneSided)
+            {
+                NoteOneSided(*static_cast<const b2EdgeShape*>(shape), transform);
             }
         }
         return true;
     }
 
-    const b2AABB& Box() const { return m_box; }
+    const b2AABB& Box() const { return m_reachBox; }
+    /// After the query: overlapping, or behind the nearest one-sided edge.
+    bool Inside() const
+    {
+        return overlaps ||
+               (m_nearest <= m_behindReach && b2Dot(m_center - m_nearestPoint, NormalSum()) < 0.0f);
+    }
+
     bool overlaps = false;
 
 private:
+    // m beyond the disc within which one-sided edges are looked at: a start point is never farther than
+    // this from the surface it was lifted off, so an edge it could be behind is always this close.
+    static constexpr float kBehindReach = 0.1f;
+
+    bool Overlaps(const b2Shape* shape, int child, const b2Transform& transform) const
+    {
+        b2DistanceInput input;
+        input.proxyA.Set(shape, child);
+        input.proxyB = m_discProxy;
+        input.transformA = transform;
+        input.transformB.SetIdentity();
+        input.useRadii = true;
+        b2SimplexCache cache;
+        cache.count = 0;
+        b2DistanceOutput output;
+        b2Distance(&output, &cache, &input);
+        return output.distance <= 0.0f;
+    }
+
+    void NoteOneSided(const b2EdgeShape& edge, const b2Transform& transform)
+    {
+        const b2Vec2 v1 = b2Mul(transform, edge.m_vertex1);
+        const b2Vec2 v2 = b2Mul(transform, edge.m_vertex2);
+        const b2Vec2 along = v2 - v1;
+        const float length = along.Length();
+        if (length <= b2_epsilon)
+        {
+            return;
+        }
+        const float t = b2Clamp(b2Dot(m_center - v1, along) / (length * length), 0.0f, 1.0f);
+        const b2Vec2 closest = v1 + t * along;
+        const float distance = b2Distance(m_center, closest);
+        const b2Vec2 front(along.y / length, -along.x / length); // Box2D: the right side collides
+        if (distance < m_nearest - kSame)
+        {
+            m_nearest = distance;
+            m_nearestPoint = closest;
+            m_normals[0] = front;
+            m_normalCount = 1;
+        }
+        else if (distance <= m_nearest + kSame && b2DistanceSquared(closest, m_nearestPoint) <= kSame * kSame)
+        {
+            // The same vertex reached from another edge. Box2D reports a chain once per child proxy in the
+            // box, and each report looks at all children: an edge seen before adds nothing.
+            for (int i = 0; i < m_normalCount; ++i)
+            {
+                if (m_normals[i].x == front.x && m_normals[i].y == front.y)
+                {
+                    return;
+                }
+            }
+            if (m_normalCount < kMaxNormals)
+            {
+                m_normals[m_normalCount++] = front;
+            }
+        }
+    }
+
+    b2Vec2 NormalSum() const
+    {
+        b2Vec2 sum(0.0f, 0.0f);
+        for (int i = 0; i < m_normalCount; ++i)
+        {
+            sum += m_normals[i];
+        }
+        return sum;
+    }
+
+    static constexpr float kSame = 1e-6f; // m: the same distance, the same vertex
+    static constexpr int kMaxNormals = 4;
+
     const BodyFilter* m_ignore;
+    b2Vec2 m_center;
+    float m_behindReach;
     b2CircleShape m_disc;
     b2DistanceProxy m_discProxy;
     b2AABB m_box;
+    b2AABB m_reachBox;
+    float m_nearest = b2_maxFloat;
+    b2Vec2 m_nearestPoint{0.0f, 0.0f};
+    b2Vec2 m_normals[kMaxNormals] = {};
+    int m_normalCount = 0;
 };
 
 class HighestStatic final : public b2RayCastCallback
@@ -133,23 +204,39 @@ bool ProjectOntoSurface(const SpawnQuery& query, b2Vec2 point, float reach, b2Ve
     return true;
 }
 
-} // namespace
-
-bool IsInsideSolid(const b2World& world, b2Vec2 point, const BodyFilter* ignore)
+// Tries offsets along a line from the contact, `firstSide` first: 0, then 1 .. 8 steps each way, then
+// growing by half each time up to `searchDistance`. Returns the first start `attempt` accepts.
+template <class Attempt> SpawnPoint Walk(float firstSide, float step, float searchDistance, Attempt&& attempt)
 {
-    PointQuery query(point, ignore);
-    b2AABB box;
-    box.lowerBound = point - b2Vec2(b2_linearSlop, b2_linearSlop);
-    box.upperBound = point + b2Vec2(b2_linearSlop, b2_linearSlop);
-    world.QueryAABB(&query, box);
-    return query.inside;
+    SpawnPoint found;
+    float offset = 0.0f;
+    for (int k = 0; offset <= searchDistance; ++k)
+    {
+        for (float side : {firstSide, -firstSide})
+        {
+            if (k == 0 && side != firstSide)
+            {
+                continue;
+            }
+            if (attempt(side * offset, found))
+            {
+                found.outside = true;
+                return found;
+            }
+        }
+        offset = k < 8 ? offset + step : offset * 1.5f;
+    }
+    found.outside = false;
+    return found;
 }
+
+} // namespace
 
 bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
 {
     DiscQuery query(center, radius, ignore);
     world.QueryAABB(&query, query.Box());
-    return !query.overlaps;
+    return !query.Inside();
 }
 
 SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
@@ -164,38 +251,48 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
     float step = std::max(clearance, 0.01f);
     float reach = std::max(4.0f * clearance, 0.25f);
 
-    SpawnPoint fallback;
-    fallback.position = query.point + clearance * query.normal;
-    fallback.normal = query.normal;
-
-    // Offsets 0, 1, 2, ... 8 steps, then growing by half each time up to the search distance.
-    float offset = 0.0f;
-    for (int k = 0; offset <= query.searchDistance; ++k)
+    SpawnPoint found = Walk(firstSide, step, query.searchDistance,
+                            [&](float offset, SpawnPoint& start)
+                            {
+                                const b2Vec2 along = query.point + offset * tangent;
+                                b2Vec2 surfacePoint = along;
+                                b2Vec2 surfaceNormal = query.normal;
+                                if (!ProjectOntoSurface(query, along, reach, &surfacePoint, &surfaceNormal))
+                                {
+                                    // Past the end of the surface (or not facing us): keep the contact plane.
+                                    surfacePoint = along;
+                                    surfaceNormal = query.normal;
+                                }
+                                start.position = surfacePoint + clearance * surfaceNormal;
+                                start.normal = surfaceNormal;
+                                return DiscIsClear(world, start.position, query.radius, ignore);
+                            });
+    if (!found.outside)
     {
-        for (float side : {firstSide, -firstSide})
-        {
-            if (k == 0 && side != firstSide)
-            {
-                continue;
-            }
-            b2Vec2 along = query.point + (side * offset) * tangent;
-            b2Vec2 surfacePoint = along;
-            b2Vec2 surfaceNormal = query.normal;
-            if (!ProjectOntoSurface(query, along, reach, &surfacePoint, &surfaceNormal))
-            {
-                // Past the end of the surface (or not facing us): keep the contact plane.
-                surfacePoint = along;
-                surfaceNormal = query.normal;
-            }
-            b2Vec2 candidate = surfacePoint + clearance * surfaceNormal;
-            if (DiscIsClear(world, candidate, query.radius, ignore))
-            {
-                return SpawnPoint{candidate, surfaceNormal, true};
-            }
-        }
-        offset = k < 8 ? offset + step : offset * 1.5f;
+        found.position = query.point + clearance * query.normal;
+        found.normal = query.normal;
     }
-    return fallback;
+    return found;
+}
+
+SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
+{
+    // Along x, trailing side first, as FindSpawnPoint walks along the surface.
+    const float firstSide = query.slip.x > 0.0f ? -1.0f : 1.0f;
+    const float step = std::max(query.radius + b2_polygonRadius + b2_linearSlop, 0.01f);
+    SpawnPoint found =
+        Walk(firstSide, step, query.searchDistance,
+             [&](float offset, SpawnPoint& start)
+             {
+                 start = TutorialDropPoint(world, query.point + b2Vec2(offset, 0.0f));
+                 return start.outside && DiscIsClear(world, start.position, query.radius, ignore);
+             });
+    if (!found.outside)
+    {
+        found = TutorialDropPoint(world, query.point);
+        found.outside = false;
+    }
+    return found;
 }
 
 SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point)

@@ -6,8 +6,13 @@
 // surfaces: it projects the contact point onto the surface fixture's boundary with a ray cast from the
 // other body's side (the outside, so one-sided edges and chains are hit from their solid-facing side),
 // lifts it by the particle's radius plus the shape's skin (b2_polygonRadius for polygons and edges), and
-// walks along the surface, trailing side first, until the particle's disc overlaps no solid fixture of the
+// walks along the surface, trailing side first, until the particle's disc is inside no solid fixture of the
 // world. Circles, polygons, edges and chains all answer ray casts, so one method serves every shape.
+//
+// Inside means: the disc overlaps a solid (non-sensor) fixture, skins included, or its centre is behind
+// the nearest one-sided edge or chain (they collide on their front only, so what is behind them is in
+// the solid they bound). When no start near the contact is outside (piles, crevices), the search says so
+// and the particle is not spawned: a particle never starts inside.
 #pragma once
 
 #include <box2d/b2_math.h>
@@ -42,23 +47,28 @@ struct SpawnPoint
 {
     b2Vec2 position{0.0f, 0.0f}; ///< where to start, world, m
     b2Vec2 normal{0.0f, 1.0f};   ///< surface normal there, unit
-    bool outside = false;        ///< false when no point outside every solid fixture was found
+    bool outside = false;        ///< false when no start outside every solid fixture was found
 };
 
-/// A point near the contact outside both surfaces (see the file comment). `ignore` may be null.
+/// A start near the contact outside every solid (see the file comment), `outside` false when none within
+/// query.searchDistance along the surface. `ignore` may be null.
 SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);
 
 /// The tutorial's placement: (x, y of the highest static fixture under x, plus 0.05 m), from a ray
 /// cast from (x, 1000) down to (x, -1000). `outside` is false when nothing static is under x (the
-/// position is then the point itself).
+/// position is then the point itself). Whatever else may stand there is not looked at.
 SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point);
 
-/// Whether a disc overlaps no solid (non-sensor) fixture of a body `ignore` does not ignore, polygon
-/// and edge skins (b2_polygonRadius) included.
-bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
+/// The tutorial's placement, never inside: the drop at query.point's x when the particle's disc there is
+/// clear (DiscIsClear), else the drop at x moved along the ground, trailing side first (against
+/// query.slip.x), by growing steps up to query.searchDistance each way. The tutorial's own drop lands
+/// inside the wheel or the car's body that stands on the contact (its particles do not collide with
+/// them); this one lands beside it. `outside` false when no clear drop was found.
+SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);
 
-/// Whether `point` is inside a solid (non-sensor) fixture of a body `ignore` does not ignore. Edges and
-/// chains have no inside.
-bool IsInsideSolid(const b2World& world, b2Vec2 point, const BodyFilter* ignore);
+/// Whether a disc is inside no solid fixture of a body `ignore` does not ignore: it overlaps none (polygon
+/// and edge skins, b2_polygonRadius, included) and its centre is not behind the nearest one-sided edge or
+/// chain within 0.1 m of the disc. `ignore` may be null.
+bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
 
 } // namespace cfx

@@ -2,17 +2,21 @@
 //
 //   contactfx bench particles --count N [--steps S] [--warmup W] [--mode pool|bodies] [--threads T] [--json]
 //   contactfx bench demo [--steps S] [--json]
+//   contactfx bench debris [--boxes N] [--steps S] [--json]
 //
 // `particles` runs the particle benchmark scene (a body per particle, or the pool) and prints the
 // minimum and median milliseconds per step and the heap bytes per live particle; for the pool also the
 // particle update alone and the plain integration of the same arrays. Without --mode both modes run and
 // their ratio is printed. `demo` times the tutorial scene with its scripted drive with and without the
-// effects layer. Timing depends on the machine: nothing here is checked against a figure.
+// effects layer. `debris` runs the debris scene (steel boxes sliding down concrete ramps into a pile, the
+// particle budget full) and compares Effects::Step with world.Step step by step. Timing depends on the
+// machine: nothing here is checked against a figure.
 #include "bench_command.h"
 
 #include "cli_common.h"
 #include "contactfx/error.h"
 #include "harness/scenes.h"
+#include "scenes/debris_bench.h"
 #include "scenes/demo_bench.h"
 #include "scenes/particle_bench.h"
 
@@ -43,6 +47,13 @@ struct ParticleBenchOptions
 struct DemoBenchOptions
 {
     std::uint32_t steps = 1200;
+    bool json = false;
+};
+
+struct DebrisBenchOptions
+{
+    std::uint32_t boxes = 200;
+    std::uint32_t steps = 600;
     bool json = false;
 };
 
@@ -169,6 +180,41 @@ int RunDemo(const DemoBenchOptions& options)
     return kExitOk;
 }
 
+int RunDebris(const DebrisBenchOptions& options)
+{
+    const bench::DebrisBenchResult result = bench::MeasureDebris(options.boxes, options.steps);
+    if (options.json)
+    {
+        const Json out{{"boxes", result.boxes},
+                       {"steps", result.steps},
+                       {"world_ms_median", result.worldMsMedian},
+                       {"effects_ms_median", result.effectsMsMedian},
+                       {"effects_ms_p99", result.effectsMsP99},
+                       {"effects_ms_max", result.effectsMsMax},
+                       {"effects_over_world", result.effectsOverWorld},
+                       {"live_max", result.liveMax},
+                       {"ns_per_particle", result.nsPerParticle}};
+        std::printf("%s\n", out.dump().c_str());
+        return kExitOk;
+    }
+    std::printf("contactfx bench debris: %u steel boxes on concrete ramps and in a bin, default effects "
+                "(budget %u), %u steps at %.0f Hz\n",
+                result.boxes, result.capacity, result.steps, static_cast<double>(bench::kDebrisHz));
+    std::printf("  world.Step:     median %.4f ms\n", result.worldMsMedian);
+    std::printf("  Effects::Step:  median %.4f ms, p99 %.4f ms, max %.4f ms\n", result.effectsMsMedian,
+                result.effectsMsP99, result.effectsMsMax);
+    std::printf("  effects / world over the run: %.3f; %.1f ns per particle moved and step\n",
+                result.effectsOverWorld, result.nsPerParticle);
+    std::printf(
+        "  particles: at most %u live at once (%u after a step) of %u; the pool was full when emitting in "
+        "%u of %u steps; %llu sparks\n",
+        result.liveMax, result.liveAfterMax, result.capacity, result.stepsFull, result.steps,
+        static_cast<unsigned long long>(result.sparks));
+    std::printf("  %llu boxes dropped onto the ramps; %u of %u boxes touch another box at the end\n",
+                static_cast<unsigned long long>(result.dropped), result.touchingAtEnd, result.boxes);
+    return kExitOk;
+}
+
 } // namespace
 
 void RegisterBenchCommand(CLI::App& app, int& result)
@@ -205,6 +251,21 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         ->capture_default_str();
     demo->add_flag("--json", demoOptions->json, "One JSON object instead of text");
     demo->callback([demoOptions, &result] { result = Guarded([&] { return RunDemo(*demoOptions); }); });
+
+    auto debrisOptions = std::make_shared<DebrisBenchOptions>();
+    CLI::App* debris = bench->add_subcommand(
+        "debris",
+        "Steel boxes sliding down concrete ramps into a pile, particle budget full: Effects::Step against "
+        "world.Step");
+    debris->add_option("--boxes", debrisOptions->boxes, "Dynamic boxes, 1 .. 10,000")
+        ->check(CLI::Range(1u, 10000u))
+        ->capture_default_str();
+    debris->add_option("--steps", debrisOptions->steps, "Timed steps at 60 Hz from the start, 1 .. 100,000")
+        ->check(CLI::Range(1u, 100000u))
+        ->capture_default_str();
+    debris->add_flag("--json", debrisOptions->json, "One JSON object instead of text");
+    debris->callback([debrisOptions, &result]
+                     { result = Guarded([&] { return RunDebris(*debrisOptions); }); });
 }
 
 } // namespace cfx::cli

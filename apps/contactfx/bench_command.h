@@ -1,4 +1,4 @@
-// contactfx bench particles / contactfx bench demo: how fast the particles and the effects layer are.
+// contactfx bench particles / demo / debris: how fast the particles and the effects layer are.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -6,7 +6,8 @@
 namespace cfx::cli
 {
 
-/// Registers `bench` with its subcommands `particles` and `demo`; each sets `result` to its exit code.
+/// Registers `bench` with its subcommands `particles`, `demo` and `debris`; each sets `result` to its exit
+/// code.
 void RegisterBenchCommand(CLI::App& app, int& result);
 
 } // namespace cfx::cli

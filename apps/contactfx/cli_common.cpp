@@ -27,6 +27,9 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
             "UINT64"))
         ->capture_default_str();
     command.add_option("--stats", options.stats, "Write statistics as JSON to this file");
+    command.add_flag("--check-particles", options.checkParticles,
+                     "Check every particle after every step against the world (slow): the stats count "
+                     "particle_steps_inside and crossings");
     AddEffectsOptions(command, options,
                       demo ? "Effects config JSON (overrides --preset); the tutorial scene's fixtures name "
                              "steel, rubber, concrete and dirt"

@@ -28,6 +28,7 @@ struct RunOptions
     std::uint64_t seed = 1;
     std::string stats;  ///< stats file; empty: none
     std::string events; ///< events file (JSON Lines); empty: none
+    bool checkParticles = false; ///< ParticleSystemOptions::checkParticles
 };
 
 /// Adds --seconds, --hz, --seed, --stats, --preset and --effects to `command`; `demo` (a command on the

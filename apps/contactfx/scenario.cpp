@@ -76,6 +76,7 @@ Scenario SelectScenario(const RunOptions& options)
     }
     scenario.def.seed = options.seed;
     scenario.def.hz = static_cast<float>(options.hz);
+    scenario.def.particles.checkParticles = options.checkParticles;
     return scenario;
 }
 

@@ -25,11 +25,13 @@ float CheckedHz(float hz)
 
 Simulation::Simulation(const SimulationDef& def)
     : m_scene(LoadRubeFile(def.scene)), m_drive(def.drive), m_sceneFile(def.scene.string()), m_seed(def.seed),
+      m_particleOptions(def.particles),
       m_dt(1.0f / CheckedHz(def.hz))
 {
     EffectsDef effectsDef;
     effectsDef.config = def.config;
     effectsDef.seed = def.seed;
+    effectsDef.particles = def.particles;
     m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
     AssignSceneMaterials(m_scene, *m_effects, def.scene.string());
     m_car = Car::Find(m_scene);
@@ -55,6 +57,7 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
     EffectsDef effectsDef;
     effectsDef.config = config;
     effectsDef.seed = m_seed;
+    effectsDef.particles = m_particleOptions;
     m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
     AssignSceneMaterials(m_scene, *m_effects, m_sceneFile);
 }
@@ -156,6 +159,10 @@ std::string StatsJson(const Effects& effects, float hz)
     root["rules"] = rules;
     root["live_max"] = stats.liveMax;
     root["spawned_inside_solid"] = stats.spawnedInsideSolid;
+    root["crushed"] = stats.crushed;
+    root["particle_steps_inside"] = stats.particleStepsInside;
+    root["crossings"] = stats.crossings;
+    root["spawn_rejected"] = stats.spawnRejected;
     return root.dump(2) + "\n";
 }
 

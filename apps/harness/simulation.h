@@ -30,6 +30,7 @@ struct SimulationDef
     std::uint64_t seed = 1;
     float hz = 60.0f;                    ///< steps per second, in [1, 10000]
     std::span<const DriveSegment> drive; ///< scripted input for the scene's car; empty: no driver
+    ParticleSystemOptions particles;     ///< threads, and the particle check (checkParticles)
 };
 
 class Simulation
@@ -76,13 +77,15 @@ private:
     std::optional<DriveInput> m_manual;
     std::string m_sceneFile; // for diagnostics
     std::uint64_t m_seed;
+    ParticleSystemOptions m_particleOptions;
     float m_dt;
     std::uint64_t m_steps = 0;
     StepTimes m_times;
 };
 
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
-/// {"contacts_max", "spawned"}}, "live_max", "spawned_inside_solid"}; rule names sorted, every type and
+/// {"contacts_max", "spawned"}}, "live_max", "spawned_inside_solid", "crushed", "particle_steps_inside",
+/// "crossings", "spawn_rejected"}; rule names sorted, every type and
 /// rule present.
 std::string StatsJson(const Effects& effects, float hz);
 

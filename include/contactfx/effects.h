@@ -6,10 +6,11 @@
 //     for (;;) { world.Step(dt, 8, 3); fx.Step(dt); draw(fx.Particles()); }
 //
 // Data flows one way, once per step: Box2D's callbacks record touching contacts and impulses
-// (ContactTracker) while the world steps; Effects::Step then turns every manifold point of every tracked
-// contact into an intensity, emits particles at a rate that grows with it, finds where they start, and
-// advances the particles; the same pass reports scrapes and impacts as events (events.h). Nothing is
-// created or destroyed inside Box2D callbacks.
+// (ContactTracker) while the world steps; Effects::Step then turns the manifold points of each body pair
+// (the tracked contacts of a rule between two bodies) into an intensity, emits particles at a rate that
+// grows with it, finds where they start (never inside a solid), and advances the particles; the same
+// pass reports scrapes and impacts as events (events.h). Nothing is created or destroyed inside Box2D
+// callbacks.
 //
 // Lifetime: create after the world, destroy before it; one Effects per world at a time (destroy the old
 // one before creating its replacement). Contacts already touching when Effects is created are picked up
@@ -53,6 +54,7 @@ struct EffectsDef
     b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
     EffectEventListener* eventListener = nullptr;         ///< receives each step's events, may be null
+    ParticleSystemOptions particles;                      ///< threads, and the particle check
 };
 
 class Effects

@@ -1,16 +1,17 @@
 // contactfx: effect events for sound and gameplay.
 //
 // The same contact analysis that drives the particles, as events read after each step (like Box2D v3's
-// event arrays), with an optional callback. A scrape is one tracked contact rubbing above its rule's
-// threshold: it begins, changes every step with its intensity, and always ends (contact ended, a body
-// fell asleep, intensity at or below the threshold for the rule's scrapeEndDelay, a fixture or body
-// destroyed), so a looping sound that follows its id always stops. An impact is a first touch whose
-// approach speed along the normal, taken before the solver removes it, reaches the rule's
-// impactThreshold.
+// event arrays), with an optional callback. A scrape is one body pair (all touching contacts of a rule
+// between the same two bodies, however many fixtures or chain segments they span) rubbing above its
+// rule's threshold: it begins, changes every step with its intensity, and always ends (the pair's last
+// contact ended, a body fell asleep, intensity at or below the threshold for the rule's scrapeEndDelay,
+// the last fixture or body destroyed), so a looping sound that follows its id always stops. An impact is
+// a first touch whose approach speed along the normal, taken before the solver removes it, reaches the
+// rule's impactThreshold; a body pair reports at most one per step (its fastest new contact).
 //
 // Order within a step, the same for the same inputs: first the scrapes that ended inside Box2D's
-// callbacks since the last step (in callback order), then rule by rule, contact by contact in tracking
-// order: the contact's impact, then its scrape event.
+// callbacks since the last step (in callback order), then rule by rule, body pair by body pair in the
+// order of each pair's first contact in tracking order: the pair's impact, then its scrape event.
 #pragma once
 
 #include "contactfx/materials.h"
@@ -49,21 +50,22 @@ struct EffectEvent
     RuleId rule;
     MaterialId materialA; ///< the rule's materialA
     MaterialId materialB; ///< the rule's materialB
-    /// The fixtures with materialA and materialB. After a `destroyed` end they are the addresses the
-    /// destroyed fixtures had: compare, never dereference.
+    /// The fixtures with materialA and materialB (scrapes: of the contact whose point is reported; an
+    /// ended scrape: as last reported, or of the pair's last contact when it ended). After a `destroyed`
+    /// end they are the addresses the destroyed fixtures had: compare, never dereference.
     const b2Fixture* fixtureA = nullptr;
     const b2Fixture* fixtureB = nullptr;
     /// Scrape events: the scrape's id, the same from began to ended, never reused. Impacts: an id of
     /// their own from the same counter.
     std::uint32_t id = 0;
     std::uint64_t step = 0; ///< Effects step counter when the event was made (first step: 0)
-    /// m, world: the manifold point with the highest intensity (scrapes; where it was last reported for
-    /// an ended scrape) or approach speed (impacts)
+    /// m, world: the body pair's manifold point with the highest intensity (scrapes; where it was last
+    /// reported for an ended scrape) or approach speed (impacts)
     b2Vec2 point{0.0f, 0.0f};
     b2Vec2 normal{0.0f, 0.0f};    ///< unit, from fixtureA's side toward fixtureB's
-    float intensity = 0.0f;       ///< scrapes: highest sample intensity this step
+    float intensity = 0.0f;       ///< scrapes: the body pair's intensity this step (what drives emission)
     float tangentialSpeed = 0.0f; ///< m/s, scrapes: sliding speed at that point
-    float normalImpulse = 0.0f;   ///< N*s: sum of the points' PostSolve normal impulses this step
+    float normalImpulse = 0.0f;   ///< N*s: sum of the body pair's PostSolve normal impulses this step
     float approachSpeed = 0.0f;   ///< m/s, impacts: approach speed along the normal before the solver
 };
 

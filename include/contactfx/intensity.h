@@ -59,7 +59,9 @@ struct ContactSample
     b2Vec2 velocityB{0.0f, 0.0f}; ///< velocity of body B at the point, m/s
     float frictionA = 0.0f;       ///< friction coefficient of fixture A, >= 0
     float frictionB = 0.0f;       ///< friction coefficient of fixture B, >= 0
-    float normalForce = 0.0f;     ///< N: PostSolve normal impulse of this point / step time, >= 0
+    /// N, >= 0: the normal force pressing the sample: PostSolve normal impulse / step time (rate emission
+    /// gives each point its body pair's total, see rules.h)
+    float normalForce = 0.0f;
 };
 
 /// Friction of a pair under a mix. Inputs >= 0.

@@ -15,7 +15,8 @@
 // hit fixture as Box2D mixes them (max, sqrt of the product), relative to the surface's velocity. Static
 // fixtures are cached in a grid that is rebuilt whenever the static geometry changes (see
 // docs/particles.md for the contract); dynamic and kinematic bodies are met in their own frame, so a
-// moving body carries or pushes particles away and never leaves one inside. One-sided edges and chains
+// moving body carries or pushes particles away, never leaves one inside and never pushes one into or
+// through static geometry: a particle with no free place is crushed (dies, and is counted). One-sided edges and chains
 // are solid only from their front. Particles never collide with each other. Body-backed particles are
 // Box2D bodies created and destroyed here (the tutorial's way, for particles that must push things);
 // their position and velocity are read back each step. Large pools are split across threads; the result
@@ -86,6 +87,24 @@ struct ParticleSystemOptions
     /// costs about a sixth as much per particle and needs eight times as many (where a split of it was
     /// measured to pay). >= 1.
     std::uint32_t minParticlesPerThread = 2048;
+    /// Checks every pool particle after every step against the world's own fixtures (see
+    /// ParticleCounters::stepsInside and ::crossings). Costs a world query per particle and step: for
+    /// tests, benchmarks and debugging.
+    bool checkParticles = false;
+};
+
+/// What the system prevented or found, since creation.
+struct ParticleCounters
+{
+    /// Pool particles a moving body squeezed against other geometry with no free place: they died
+    /// (life 0 for the rest of that step) instead of being put inside or through something.
+    std::uint64_t crushed = 0;
+    /// With checkParticles: particle steps that ended with the particle's centre inside a solid circle
+    /// or polygon fixture it collides with (static or moving).
+    std::uint64_t stepsInside = 0;
+    /// With checkParticles: particle steps whose centre's straight path crossed a static edge or chain it
+    /// collides with (a two-sided edge from either side, a one-sided one from its front).
+    std::uint64_t crossings = 0;
 };
 
 class ParticleSystem final
@@ -111,6 +130,8 @@ public:
     std::uint32_t Capacity() const { return m_capacity; }
     /// Particles that took the place of a live one because the pool was full.
     std::uint64_t Recycled() const { return m_recycled; }
+    /// Crushed particles and, with ParticleSystemOptions::checkParticles, what the check found.
+    const ParticleCounters& Counters() const { return m_counters; }
     /// Whether `body` is the Box2D body of one of this system's body-backed particles (spawn point
     /// tests and the static geometry cache ignore those; an application's own queries may too).
     bool IsParticleBody(const b2Body* body) const;
@@ -132,6 +153,7 @@ private:
     std::uint32_t m_count = 0;
     std::uint32_t m_capacity = 0;
     std::uint64_t m_recycled = 0;
+    ParticleCounters m_counters;
     unsigned m_threadsUsed = 1;
 
     void Advance(float dt, b2Vec2 gravity, bool collide);

@@ -9,7 +9,8 @@ namespace cfx
 /// The tutorial, exactly: materials steel, rubber, concrete, dirt; rules steel+concrete -> sparks,
 /// rubber+concrete -> smoke, steel+dirt and rubber+dirt -> dirt; intensity |vA - vB| * fA * fB at the
 /// first manifold point, threshold 1, one particle per contact per step, particles dropped onto the
-/// static ground below the contact, Box2D bodies of radius 0.01, at most 100, oldest recycled. Life
+/// static ground below the contact (beside the wheel or body standing there instead of inside it, the
+/// one change: SpawnPlacement::tutorialDrop), Box2D bodies of radius 0.01, at most 100, oldest recycled. Life
 /// losses per step are expressed as lifetimes at the tutorial's 60 Hz. Fixtures without a `material`
 /// property get the tutorial's guesses as assignments: steel on bodies heavier than 3 kg, concrete on
 /// static fixtures with friction > 0.5, dirt on static ones with friction < 0.5, rubber on other dynamic
@@ -17,9 +18,9 @@ namespace cfx
 EffectsConfig TutorialPreset();
 
 /// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction
-/// mix, pressure-weighted, thresholds per pair, rate-based emission independent of the step rate,
-/// spawning outside both surfaces, pool particles with colour and size over life. The same assignments
-/// as the tutorial preset.
+/// mix, pressure-weighted, thresholds per pair, rate-based emission per body pair independent of the step
+/// rate and of the tessellation, spawning outside every solid (or not at all), pool particles with colour
+/// and size over life. The same assignments as the tutorial preset.
 EffectsConfig DefaultPreset();
 
 } // namespace cfx

@@ -19,12 +19,15 @@ namespace cfx
 /// How intensity above the threshold becomes particles.
 enum class EmissionMode : std::uint8_t
 {
-    /// rate = ratePerIntensity * (intensity - threshold) particles per second, capped at maxRate,
-    /// accumulated across steps per manifold point: the count emitted for the same motion does not
-    /// depend on the step rate.
+    /// Per body pair (all contacts of the rule between the same two bodies, with all their manifold
+    /// points, are one sliding contact): rate = ratePerIntensity * (intensity - threshold) particles per
+    /// second, capped at maxRate, from the pair's intensity (its points' intensities weighted by normal
+    /// impulse, each pressed by the pair's whole normal force), accumulated across steps per pair and
+    /// shared out over the points by normal impulse. The count emitted for the same motion depends
+    /// neither on the step rate nor on how many fixtures, chain segments or manifold points it spans.
     rate,
-    /// One particle per sample per step while intensity > threshold (the tutorial). Depends on the
-    /// step rate by design.
+    /// One particle per sample per contact per step while the sample's intensity > threshold (the
+    /// tutorial). Depends on the step rate and on the number of contacts and points by design.
     perStep,
 };
 
@@ -32,9 +35,12 @@ enum class EmissionMode : std::uint8_t
 enum class SpawnPlacement : std::uint8_t
 {
     /// Outside both surfaces of the contact, found by ray casts against the two fixtures near the
-    /// contact point (polygons, circles, edges and chains, one-sided included).
+    /// contact point (polygons, circles, edges and chains, one-sided included). Never inside a solid:
+    /// when no start near the contact is free, the particle is not spawned (EffectsStats::spawnRejected).
     surface,
-    /// The tutorial's: x of the contact point, y of the highest static fixture under it plus 0.05 m.
+    /// The tutorial's: x of the contact point, y of the highest static fixture under it plus 0.05 m;
+    /// when a wheel or body standing there makes that start inside it, the same drop at x moved along
+    /// the ground, trailing side first, up to 1 m each way, else not spawned.
     tutorialDrop,
 };
 
@@ -46,12 +52,12 @@ struct RuleDef
     std::string materialB;
     std::string particleType;
     IntensityModel intensity;
-    /// Samples with intensity <= threshold emit nothing. >= 0.
+    /// Intensities <= threshold emit nothing (rate: the body pair's; perStep: each sample's). >= 0.
     float threshold = 1.0f;
     EmissionMode emission = EmissionMode::rate;
     /// Particles per second per unit of intensity above the threshold (rate mode). >= 0.
     float ratePerIntensity = 50.0f;
-    /// Cap on one sample's rate, particles per second (rate mode). >= 0.
+    /// Cap on one body pair's rate, particles per second (rate mode). >= 0.
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 

@@ -30,6 +30,17 @@ struct EffectsStats
     std::uint32_t liveMax = 0;
     std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture
     std::uint64_t recycled = 0;           ///< live particles replaced because the pool was full
+    /// Pool particles squeezed by a moving body against other geometry with no free place: they died
+    /// (ParticleCounters::crushed).
+    std::uint64_t crushed = 0;
+    /// Only with EffectsDef::particles.checkParticles (else 0): particle steps that ended with the centre
+    /// inside a solid fixture, and particle steps whose path crossed a static edge or chain
+    /// (ParticleCounters).
+    std::uint64_t particleStepsInside = 0;
+    std::uint64_t crossings = 0;
+    /// Particles not spawned because no start outside every solid existed near their contact (piles,
+    /// crevices): a particle never starts inside.
+    std::uint64_t spawnRejected = 0;
 };
 
 } // namespace cfx

@@ -18,7 +18,7 @@ constexpr float kCellPerExtent = 1.0f;
 
 } // namespace
 
-void Grid::Build(std::span<const b2AABB> boxes, Listing listing)
+void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t maxItemsPerBox)
 {
     m_listing = listing;
     m_items.clear();
@@ -42,6 +42,19 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing)
     float cell = std::max(kCellPerExtent * *middle, kMinCell);
     const b2Vec2 size = bounds.upperBound - bounds.lowerBound;
     const std::size_t maxCells = std::max(kMinCells, kCellsPerBox * boxes.size());
+    m_lower = bounds.lowerBound;
+    m_upper = bounds.upperBound;
+    const int spread = Spread();
+    const std::size_t listed = static_cast<std::size_t>((2 * spread + 1) * (2 * spread + 1));
+    const std::size_t maxItems = maxItemsPerBox * listed * boxes.size();
+    if (boxes.size() > m_reservedBoxes && maxItemsPerBox > 0)
+    {
+        // Everything a build of this many boxes can need: later builds of as many boxes, wherever they
+        // are, allocate nothing.
+        m_cellStart.reserve(maxCells + 1);
+        m_items.reserve(maxItems);
+        m_reservedBoxes = boxes.size();
+    }
     for (;;)
     {
         const double columns = std::floor(static_cast<double>(size.x) / cell) + 1.0;
@@ -50,18 +63,18 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing)
         {
             m_columns = static_cast<int>(columns);
             m_rows = static_cast<int>(rows);
-            break;
+            m_cellSize = cell;
+            m_inverseCell = 1.0f / cell;
+            if (maxItemsPerBox == 0 || CountItems(boxes) <= maxItems)
+            {
+                break;
+            }
         }
         cell *= 1.5f;
     }
-    m_lower = bounds.lowerBound;
-    m_upper = bounds.upperBound;
-    m_cellSize = cell;
-    m_inverseCell = 1.0f / cell;
 
     const std::size_t cells = static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows);
     m_cellStart.assign(cells + 1, 0);
-    const int spread = Spread();
     // The cells listing a box: those it overlaps, and `spread` more on every side.
     auto forCells = [&](const b2AABB& box, auto&& use)
     {
@@ -96,6 +109,21 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing)
         m_cellStart[c] = m_cellStart[c - 1];
     }
     m_cellStart[0] = 0;
+}
+
+std::size_t Grid::CountItems(std::span<const b2AABB> boxes) const
+{
+    const int spread = Spread();
+    std::size_t items = 0;
+    for (const b2AABB& box : boxes)
+    {
+        const int x0 = std::max(Column(box.lowerBound.x) - spread, 0);
+        const int x1 = std::min(Column(box.upperBound.x) + spread, m_columns - 1);
+        const int y0 = std::max(Row(box.lowerBound.y) - spread, 0);
+        const int y1 = std::min(Row(box.upperBound.y) + spread, m_rows - 1);
+        items += static_cast<std::size_t>(x1 - x0 + 1) * static_cast<std::size_t>(y1 - y0 + 1);
+    }
+    return items;
 }
 
 std::size_t Grid::Bytes() const

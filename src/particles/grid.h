@@ -37,8 +37,12 @@ public:
     };
 
     /// Lists every box as `listing` says. The cell size follows the boxes' median extent, grown until
-    /// there are at most max(1024, 16 * boxes) cells.
-    void Build(std::span<const b2AABB> boxes, Listing listing = Listing::overlapped);
+    /// there are at most max(1024, 16 * boxes) cells and, when `maxItemsPerBox` > 0, at most that many
+    /// list entries per box on average (times the 3 x 3 block for a neighbourhood listing). With
+    /// `maxItemsPerBox` > 0 a build allocates only when it has more boxes than any earlier one, however
+    /// the boxes are spread (for the moving bodies, which spread out and fall out of the world).
+    void Build(std::span<const b2AABB> boxes, Listing listing = Listing::overlapped,
+               std::size_t maxItemsPerBox = 0);
 
     /// Calls visit(item) for every item whose box overlaps `box`, and some others; an item may be
     /// visited more than once. Returns a box that contains `box`, its sides on the grid's edges pushed to
@@ -130,16 +134,16 @@ private:
         box.upperBound.y = y1 >= m_rows - 1 ? kEdge : m_lower.y + static_cast<float>(y1 + 1) * m_cellSize;
         return box;
     }
-    int Column(float x) const
+    // Clamped before the conversion, so that far, huge or not-a-number coordinates convert no value an
+    // int cannot hold (NaN goes to 0).
+    int Column(float x) const { return Clamped((x - m_lower.x) * m_inverseCell, m_columns - 1); }
+    int Row(float y) const { return Clamped((y - m_lower.y) * m_inverseCell, m_rows - 1); }
+    static int Clamped(float cell, int last)
     {
-        const float cell = (x - m_lower.x) * m_inverseCell;
-        return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_columns - 1);
+        return !(cell > 0.0f) ? 0 : cell >= static_cast<float>(last) ? last : static_cast<int>(cell);
     }
-    int Row(float y) const
-    {
-        const float cell = (y - m_lower.y) * m_inverseCell;
-        return cell <= 0.0f ? 0 : std::min(static_cast<int>(cell), m_rows - 1);
-    }
+    // Entries a build with the current cells would list.
+    std::size_t CountItems(std::span<const b2AABB> boxes) const;
 
     b2Vec2 m_lower{0.0f, 0.0f};
     b2Vec2 m_upper{0.0f, 0.0f};
@@ -151,6 +155,7 @@ private:
     std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1 (1 when empty)
     std::vector<std::uint32_t> m_items;
     std::vector<float> m_scratch;
+    std::size_t m_reservedBoxes = 0; ///< the most boxes a build with an item budget has reserved room for
 };
 
 } // namespace cfx::particles

@@ -73,11 +73,38 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     return response;
 }
 
+// A moving body pushes a particle from `position` (outside all static geometry) to `target` (near the
+// body's surface). The push is a motion like any other: it is swept through the static geometry, sliding
+// along what it meets (twice at most, the rest of the push is dropped), so it never carries the particle
+// into or through a static fixture. Returns false when the particle then still overlaps a moving fixture
+// by more than half its radius: squeezed with no free place, it is crushed.
+bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, b2Vec2& position)
+{
+    b2Vec2 push = target - position;
+    for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
+    {
+        SweepResult wall;
+        if (!geometry.HasStatic() || !geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall))
+        {
+            position += push;
+            break;
+        }
+        position = wall.touch.position;
+        // Slide: what is left of the push, less its part into the wall.
+        const b2Vec2 rest = (1.0f - wall.touch.t) * push;
+        const float into = b2Dot(rest, wall.touch.normal);
+        push = into < 0.0f ? rest - into * wall.touch.normal : rest;
+    }
+    // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
+    return geometry.MovingOverlap(position, side) <= 0.5f * side.radius;
+}
+
 // Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `resting`:
 // trust the resting mark and skip the static sweep. Returns its clearance after the step (see
 // PoolArrays): kResting at a fixed point of the static sweep, kUnknownClearance after a touch.
+// `crushed`: set when a moving body squeezed it against other geometry with no free place (see Push).
 float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting, b2Vec2& position,
-              b2Vec2& velocity)
+              b2Vec2& velocity, bool& crushed)
 {
     const b2Vec2 start = position;
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
@@ -126,7 +153,14 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, boo
         SweepResult hit;
         if (geometry.SweepMoving(start, position, type.side, hit))
         {
-            position = hit.touch.position;
+            // Where the body would put it; failing that (a wedge), where it met the body.
+            const b2Vec2 free = position;
+            crushed = !Push(geometry, type.side, hit.touch.position, position);
+            if (crushed)
+            {
+                position = free;
+                crushed = !Push(geometry, type.side, hit.firstTouch, position);
+            }
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             fixedPoint = false;
@@ -148,7 +182,7 @@ struct Listed
 // Pass 1 left in each slot the particle's velocity after gravity and drag and what remains of its
 // clearance (kResting when it rests).
 void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeometry& geometry, float dt,
-                 const StepTrust& trust, const Listed& listed, std::uint32_t count)
+                 const StepTrust& trust, const Listed& listed, std::uint32_t count, StepCounts& counts)
 {
     // A particle trusted to rest stays where it started, at rest. Whether a listed particle rests is as
     // good as random, so they are put back without a branch and only the others are swept on (all of
@@ -183,7 +217,16 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         const bool resting = trust.resting && pool.clearance[slot] == kResting;
         b2Vec2 position(listed.startX[k], listed.startY[k]);
         b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
-        const float clearance = Collide(type, geometry, dt, resting, position, velocity);
+        bool crushed = false;
+        const float clearance = Collide(type, geometry, dt, resting, position, velocity, crushed);
+        if (crushed)
+        {
+            // Dies where it was squeezed (outside the static geometry): life 0 draws nothing, and the
+            // next step removes it.
+            pool.life[slot] = 0.0f;
+            velocity.SetZero();
+            ++counts.crushed;
+        }
         pool.positionX[slot] = position.x;
         pool.positionY[slot] = position.y;
         pool.velocityX[slot] = velocity.x;
@@ -249,6 +292,11 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
             pool.velocityY[write] = velocity.y;
             pool.life[write] = life;
             pool.type[write] = pool.type[read];
+            if (pool.startX != nullptr)
+            {
+                pool.startX[write] = start.x;
+                pool.startY[write] = start.y;
+            }
             if (pool.body != nullptr)
             {
                 pool.body[write] = pool.body[read];
@@ -282,7 +330,7 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
 template <bool kCollide, bool kMoving, bool kDistrust>
 std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const WorldGeometry* geometry,
                       float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                      std::vector<b2Body*>& dead)
+                      std::vector<b2Body*>& dead, StepCounts& counts)
 {
     // A local copy: the stores below cannot alias it, so its pointers stay in registers.
     const PoolArrays pool = arrays;
@@ -299,7 +347,7 @@ std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const Wor
                                                        listed, listedCount, dead);
         if constexpr (kCollide)
         {
-            SweepListed(pool, types, *geometry, dt, trust, listed, listedCount);
+            SweepListed(pool, types, *geometry, dt, trust, listed, listedCount, counts);
         }
     }
     return kept;
@@ -309,21 +357,21 @@ std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const Wor
 
 std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
                            float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                           std::vector<b2Body*>& dead)
+                           std::vector<b2Body*>& dead, StepCounts& counts)
 {
     if (geometry == nullptr)
     {
-        return Advance<false, false, false>(pool, types, nullptr, dt, trust, begin, end, dead);
+        return Advance<false, false, false>(pool, types, nullptr, dt, trust, begin, end, dead, counts);
     }
     if (!trust.clearance)
     {
-        return Advance<true, false, true>(pool, types, geometry, dt, trust, begin, end, dead);
+        return Advance<true, false, true>(pool, types, geometry, dt, trust, begin, end, dead, counts);
     }
     if (geometry->HasMoving())
     {
-        return Advance<true, true, false>(pool, types, geometry, dt, trust, begin, end, dead);
+        return Advance<true, true, false>(pool, types, geometry, dt, trust, begin, end, dead, counts);
     }
-    return Advance<true, false, false>(pool, types, geometry, dt, trust, begin, end, dead);
+    return Advance<true, false, false>(pool, types, geometry, dt, trust, begin, end, dead, counts);
 }
 
 void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count)
@@ -339,6 +387,11 @@ void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to,
         pool.life[write] = pool.life[read];
         pool.type[write] = pool.type[read];
         pool.clearance[write] = pool.clearance[read];
+        if (pool.startX != nullptr)
+        {
+            pool.startX[write] = pool.startX[read];
+            pool.startY[write] = pool.startY[read];
+        }
         if (pool.body != nullptr)
         {
             pool.body[write] = pool.body[read];

@@ -37,6 +37,10 @@ struct PoolArrays
     /// when resting: (position, zero velocity) is a fixed point of the static sweep.
     float* clearance;
     b2Body** body; ///< null when no type is body-backed
+    /// Where each particle was at the start of the last step (for the particle check); null unless
+    /// checking. Moved with its particle like the other arrays.
+    float* startX;
+    float* startY;
     std::uint32_t capacity;
     std::uint32_t head;
 
@@ -70,14 +74,20 @@ struct StepTrust
     bool clearance = false;
 };
 
+/// What a run of a step counts.
+struct StepCounts
+{
+    std::uint64_t crushed = 0; ///< particles squeezed by a moving body with no free place (they died)
+};
+
 /// Advances logical indices [begin, end) by `dt` seconds; pool particles collide with `geometry` when
 /// it is not null. A particle whose clearance covers its motion flies freely, which is the same bits as
 /// sweeping it. Returns how many live; they are now at [begin, begin + kept) in order. Bodies of
 /// body-backed particles that died are appended to `dead` (which must have room: no allocation) for the
-/// caller to destroy on its thread.
+/// caller to destroy on its thread. Adds what it counts to `counts`.
 std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
                            float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                           std::vector<b2Body*>& dead);
+                           std::vector<b2Body*>& dead, StepCounts& counts);
 
 /// Moves `count` particles from logical index `from` to `to` (to < from), keeping their order.
 void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count);

@@ -4,6 +4,7 @@
 #include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_edge_shape.h>
+#include <algorithm>
 #include <box2d/b2_polygon_shape.h>
 
 namespace cfx::particles
@@ -46,6 +47,23 @@ bool SweepShape(const SweepInput& in, const b2Shape& shape, int child, Touch& to
 
 } // namespace
 
+b2Transform WorldGeometry::MovingBody::At(float f) const
+{
+    if (f >= 1.0f)
+    {
+        return after;
+    }
+    if (f <= 0.0f)
+    {
+        return before;
+    }
+    b2Transform xf;
+    xf.q.Set(angleBefore + f * turn);
+    const b2Vec2 centerBefore = b2Mul(before, localCenter);
+    xf.p = centerBefore + f * (center - centerBefore) - b2Mul(xf.q, localCenter);
+    return xf;
+}
+
 bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const
 {
     const float r = side.radius;
@@ -65,25 +83,83 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                 return;
             }
             const MovingBody& body = m_movingBodies[moving.body];
-            SweepInput in;
-            in.p = b2MulT(body.before, start);
-            in.d = b2MulT(body.after, end) - in.p;
-            in.radius = r;
-            Touch local = result.touch;
-            if (!SweepShape(in, *moving.shape, moving.child, local))
+            // The disc's path in the body's frame, piece by piece: from where it was in the frame at the
+            // piece's start to where it is in the frame at the piece's end.
+            const float perPiece = 1.0f / static_cast<float>(body.pieces);
+            b2Transform frame = body.before;
+            b2Vec2 from = b2MulT(frame, start);
+            Touch local;
+            float t = 2.0f;
+            for (int piece = 0; piece < body.pieces; ++piece)
             {
-                return;
+                const float f = piece + 1 == body.pieces ? 1.0f : static_cast<float>(piece + 1) * perPiece;
+                frame = body.At(f);
+                const b2Vec2 to = b2MulT(frame, start + f * (end - start));
+                if (SweepShape(SweepInput{from, to - from, r}, *moving.shape, moving.child, local))
+                {
+                    t = (static_cast<float>(piece) + local.t) * perPiece;
+                    break;
+                }
+                from = to;
             }
-            result.touch.t = local.t;
+            if (t > 1.0f || t > result.touch.t || (t == result.touch.t && local.depth <= result.touch.depth))
+            {
+                return; // no touch, or not earlier (or, at the start, not deeper) than the best one
+            }
+            // Then the disc slides: the rest of its motion relative to the body, less its part into the
+            // surface, ends in the body's frame at the end of the step; out of the shape if a curve or a
+            // corner still puts it inside.
+            b2Vec2 normal = local.normal;
+            b2Vec2 rest = b2MulT(body.after, end) - local.position;
+            const float into = b2Dot(rest, normal);
+            if (into < 0.0f)
+            {
+                rest -= into * normal;
+            }
+            b2Vec2 final = local.position + rest;
+            Touch out;
+            if (SweepShape(SweepInput{final, b2Vec2(0.0f, 0.0f), r}, *moving.shape, moving.child, out))
+            {
+                final = out.position;
+                normal = out.normal;
+            }
+            result.firstTouch = start + t * (end - start);
+            result.touch.t = t;
             result.touch.depth = local.depth;
-            result.touch.position = b2Mul(body.after, local.position);
-            result.touch.normal = b2Mul(body.after.q, local.normal);
+            result.touch.position = b2Mul(body.after, final);
+            result.touch.normal = b2Mul(body.after.q, normal);
             result.surfaceVelocity =
                 body.velocity + b2Cross(body.angularVelocity, result.touch.position - body.center);
             result.material = &m_movingMaterials[moving.material];
             found = true;
         });
     return found;
+}
+
+float WorldGeometry::MovingOverlap(b2Vec2 point, const ParticleSide& side) const
+{
+    const float r = side.radius;
+    const b2AABB query = PathBox(point, point, r);
+    float deepest = 0.0f;
+    m_movingGrid.Query(
+        query,
+        [&](std::uint32_t index)
+        {
+            const MovingShape& moving = m_movingShapes[index];
+            if ((moving.maskBits & side.categoryBits) == 0 || (moving.categoryBits & side.maskBits) == 0 ||
+                !BoxesOverlap(query, m_movingBoxes[index]))
+            {
+                return;
+            }
+            const MovingBody& body = m_movingBodies[moving.body];
+            const SweepInput in{b2MulT(body.after, point), b2Vec2(0.0f, 0.0f), r};
+            Touch touch;
+            if (SweepShape(in, *moving.shape, moving.child, touch) && touch.t == 0.0f)
+            {
+                deepest = std::max(deepest, touch.depth);
+            }
+        });
+    return deepest;
 }
 
 } // namespace cfx::particles

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <box2d/b2_body.h>
 #include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
@@ -116,6 +117,12 @@ SurfaceMaterial MaterialOf(const b2Fixture& fixture)
 
 } // namespace
 
+namespace
+{
+// Grid cells a moving shape is listed in, on average at most (the cells grow until it holds).
+constexpr std::size_t kMovingItemsPerBox = 8;
+} // namespace
+
 void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
 {
     Signature signature;
@@ -171,6 +178,11 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         moving.before.q.Set(body->GetAngle() - dt * moving.angularVelocity);
         const b2Vec2 centerBefore = moving.center - dt * moving.velocity;
         moving.before.p = centerBefore - b2Mul(moving.before.q, body->GetLocalCenter());
+        moving.localCenter = body->GetLocalCenter();
+        moving.turn = dt * moving.angularVelocity;
+        moving.angleBefore = body->GetAngle() - moving.turn;
+        const float pieces = std::ceil(std::abs(moving.turn) / kMaxTurn);
+        moving.pieces = pieces >= 1.0f ? static_cast<int>(std::min(pieces, static_cast<float>(kMaxPieces))) : 1;
         m_movingBodies.push_back(moving);
     }
     if (signature.Value() != m_signature)
@@ -178,7 +190,9 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         BuildStatic(world);
         m_signature = signature.Value();
     }
-    m_movingGrid.Build(m_movingBoxes);
+    // Moving bodies spread out, pile up and fall out of the world: an item budget keeps the grid's
+    // memory a function of their number alone, so a step allocates only when there are more than ever.
+    m_movingGrid.Build(m_movingBoxes, Grid::Listing::overlapped, kMovingItemsPerBox);
 }
 
 void WorldGeometry::BuildStatic(b2World& world)

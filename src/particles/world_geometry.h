@@ -66,6 +66,8 @@ struct SweepResult
     Touch touch; ///< in world space
     b2Vec2 surfaceVelocity{0.0f, 0.0f};
     const SurfaceMaterial* material = nullptr; ///< valid until the next Scan
+    /// Moving sweeps only: where (world) the disc was when it first touched the body.
+    b2Vec2 firstTouch{0.0f, 0.0f};
 };
 
 /// The box a disc of radius `radius` covers moving from `start` to `end`.
@@ -110,8 +112,21 @@ public:
     bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
                      float* clearance = nullptr) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
-    /// is at `end` (both world, end of step frame for `end`).
+    /// is at `end` (world). The disc's path is followed in each body's own frame, in pieces short enough
+    /// that a turning body's arc is followed too (at most kMaxTurn of turn a piece), so a spinning wheel
+    /// meets what its rim reaches and not what a chord through it would. After the touch the disc keeps
+    /// the rest of its motion relative to the body, less the part into the surface (it slides along it),
+    /// and ends outside the body where the body is at the end of the step: pushed or carried, never
+    /// left inside. `result`: that end position (world), the surface's normal and velocity there.
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const;
+
+    /// The most a moving body turns (rad) within one piece of a moving sweep.
+    static constexpr float kMaxTurn = 0.1f;
+    /// Pieces a moving sweep is cut into at most (a turn of 6.4 rad a step: 60 rad/s at 10 Hz).
+    static constexpr int kMaxPieces = 64;
+    /// How deep (m, >= 0) the disc at `point` overlaps the moving fixtures its filter accepts, where they
+    /// are at the end of the step: the deepest overlap, 0 when it overlaps none.
+    float MovingOverlap(b2Vec2 point, const ParticleSide& side) const;
 
     /// A box holding all moving geometry (an empty box when there is none): a disc whose path box
     /// misses it meets no moving shape, and SweepMoving would find nothing.
@@ -156,6 +171,14 @@ private:
         b2Vec2 center; ///< world centre of mass at the end of the step
         b2Vec2 velocity;
         float angularVelocity;
+        b2Vec2 localCenter; ///< centre of mass in the body's frame
+        float angleBefore;  ///< rad, at the start of the step
+        float turn;         ///< rad turned in the step
+        int pieces;         ///< the step is swept in this many pieces, each turning at most kMaxTurn
+
+        /// The body's frame at fraction `f` of the step (f = 0: before, f = 1: after), as Box2D moves
+        /// it: the centre of mass along a line, the angle at a constant rate.
+        b2Transform At(float f) const;
     };
     struct MovingShape
     {

@@ -314,6 +314,91 @@ TEST(Events, GentleTouchIsNoImpactAndThresholdIsPerRule)
     EXPECT_EQ(impactsFor(6.0f, 1.0f), 0);
 }
 
+// A scrape is one per body pair: a block sliding over a chain of short segments (several contacts at once,
+// handed from segment to segment) is one scrape from start to stop.
+TEST(Events, BlockSlidingOverChainSegmentsIsOneScrape)
+{
+    TestWorld scene;
+    b2BodyDef def;
+    b2Body* ground = scene.world->CreateBody(&def);
+    std::vector<b2Vec2> points;
+    for (int i = 0; i <= 80; ++i)
+    {
+        points.emplace_back(20.0f - 0.5f * static_cast<float>(i), 0.0f); // right to left: front up
+    }
+    b2ChainShape chain;
+    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(21.0f, 0.0f),
+                      b2Vec2(-21.0f, 0.0f));
+    b2FixtureDef fixture;
+    fixture.shape = &chain;
+    fixture.friction = 0.8f;
+    ground->CreateFixture(&fixture);
+    b2Body* box = scene.CreateBox(b2Vec2(-10.0f, 0.25f), 0.5f, 0.25f, 0.5f);
+    Effects& fx = scene.Attach();
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    std::vector<EffectEvent> events;
+    std::uint32_t contactsMax = 0;
+    for (int i = 0; i < 90; ++i)
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        box->SetLinearVelocity(b2Vec2(i < 60 ? 4.0f : 0.0f, box->GetLinearVelocity().y));
+        box->SetAngularVelocity(0.0f);
+        fx.Step(1.0f / 60.0f);
+        contactsMax = std::max(contactsMax, fx.Stats().rules[0].contacts);
+        events.insert(events.end(), fx.Events().begin(), fx.Events().end());
+    }
+    EXPECT_GE(contactsMax, 2u);
+    const std::vector<EffectEvent> began = OfType(events, EffectEventType::scrapeBegan);
+    const std::vector<EffectEvent> ended = OfType(events, EffectEventType::scrapeEnded);
+    ASSERT_EQ(began.size(), 1u);
+    ASSERT_EQ(ended.size(), 1u);
+    EXPECT_EQ(ended[0].id, began[0].id);
+    EXPECT_EQ(ended[0].end, ScrapeEnd::belowThreshold);
+    EXPECT_EQ(ended[0].fixtureA, box->GetFixtureList());
+    EXPECT_EQ(ended[0].fixtureB, ground->GetFixtureList());
+    for (const EffectEvent& event : OfType(events, EffectEventType::scrapeChanged))
+    {
+        EXPECT_EQ(event.id, began[0].id);
+    }
+    EXPECT_NEAR(began[0].tangentialSpeed, 4.0f, 0.01f);
+    EXPECT_NEAR(began[0].normal.y, -1.0f, 1e-3f);
+}
+
+// A body of two fixtures scraping along: one scrape, which goes on while either fixture touches and ends
+// when the last one goes.
+TEST(Events, ScrapeOfABodyOfTwoFixturesEndsWithItsLastFixture)
+{
+    ScrapeScene scene;
+    b2PolygonShape half;
+    half.SetAsBox(0.5f, 0.25f, b2Vec2(1.0f, -0.25f), 0.0f); // a second foot beside the box, on the ground
+    b2FixtureDef def;
+    def.shape = &half;
+    def.density = 1.0f;
+    def.friction = 0.5f;
+    b2Fixture* foot = scene.box->CreateFixture(&def);
+    scene.effects->SetMaterial(foot, scene.Material("steel"));
+    scene.StepPlain(30);
+    std::vector<EffectEvent> events = scene.Slide(4.0f, 20);
+    ASSERT_EQ(OfType(events, EffectEventType::scrapeBegan).size(), 1u);
+    EXPECT_EQ(scene.effects->Stats().rules[0].contacts, 2u);
+
+    scene.effects->ForgetFixture(foot);
+    scene.box->DestroyFixture(foot);
+    events = scene.Slide(4.0f, 10);
+    EXPECT_TRUE(OfType(events, EffectEventType::scrapeEnded).empty()) << "the box still scrapes";
+    EXPECT_TRUE(OfType(events, EffectEventType::scrapeBegan).empty());
+
+    b2Fixture* last = scene.box->GetFixtureList();
+    scene.effects->ForgetFixture(last);
+    scene.box->DestroyFixture(last);
+    scene.effects->Step(1.0f / 60.0f);
+    ASSERT_EQ(scene.effects->Events().size(), 1u);
+    EXPECT_EQ(scene.effects->Events()[0].type, EffectEventType::scrapeEnded);
+    EXPECT_EQ(scene.effects->Events()[0].end, ScrapeEnd::destroyed);
+    EXPECT_EQ(scene.effects->Events()[0].fixtureA, last);
+}
+
 TEST(Events, OrderIsDeterministicAndTheListenerSeesTheArray)
 {
     auto run = []

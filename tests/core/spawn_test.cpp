@@ -200,4 +200,92 @@ TEST(Spawn, TutorialDropLandsOnTheHighestStaticFixture)
     EXPECT_NEAR(onGround.position.y, 0.05f, 1e-4f);
 }
 
+TEST(Spawn, InsideMeansTheDiscOverlapsOrIsBehindAOneSidedEdge)
+{
+    TestWorld scene;
+    scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f, b2_staticBody);
+    // A disc whose centre is outside the box but whose rim (or the box's skin) reaches it is inside.
+    EXPECT_FALSE(DiscIsClear(*scene.world, b2Vec2(0.515f, 0.5f), 0.01f, nullptr));
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(0.53f, 0.5f), 0.01f, nullptr));
+
+    // One-sided edge facing up at y = -5 (right of v1 -> v2): below it is inside even where the disc does
+    // not touch the edge; a two-sided edge has no inside.
+    b2EdgeShape oneSided;
+    oneSided.SetOneSided(b2Vec2(12.0f, -5.0f), b2Vec2(10.0f, -5.0f), b2Vec2(6.0f, -5.0f),
+                         b2Vec2(4.0f, -5.0f));
+    StaticBodyWith(*scene.world, oneSided);
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(8.0f, -4.95f), 0.01f, nullptr));
+    EXPECT_FALSE(DiscIsClear(*scene.world, b2Vec2(8.0f, -5.06f), 0.01f, nullptr)) << "behind";
+    b2EdgeShape twoSided;
+    twoSided.SetTwoSided(b2Vec2(10.0f, -8.0f), b2Vec2(6.0f, -8.0f));
+    StaticBodyWith(*scene.world, twoSided);
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(8.0f, -8.06f), 0.01f, nullptr));
+}
+
+TEST(Spawn, BehindAChainIsDecidedAtItsCornersToo)
+{
+    // A chain with a peak at (0, 1) and a valley at (4, 0), front up (listed right to left).
+    TestWorld scene;
+    b2Vec2 points[] = {b2Vec2(8.0f, 1.0f), b2Vec2(4.0f, 0.0f), b2Vec2(0.0f, 1.0f), b2Vec2(-4.0f, 0.0f)};
+    b2ChainShape chain;
+    chain.CreateChain(points, 4, b2Vec2(9.0f, 1.0f), b2Vec2(-5.0f, 0.0f));
+    StaticBodyWith(*scene.world, chain);
+    const float r = 0.01f;
+    // Peak (convex): beside and above it is outside, just under it inside.
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(0.0f, 1.05f), r, nullptr));
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(0.04f, 1.04f), r, nullptr));
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(-0.04f, 1.04f), r, nullptr));
+    EXPECT_FALSE(DiscIsClear(*scene.world, b2Vec2(0.0f, 0.95f), r, nullptr));
+    // Valley (concave): above it is outside, under it inside.
+    EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(4.0f, 0.06f), r, nullptr));
+    EXPECT_FALSE(DiscIsClear(*scene.world, b2Vec2(4.0f, -0.06f), r, nullptr));
+    EXPECT_FALSE(DiscIsClear(*scene.world, b2Vec2(4.05f, -0.03f), r, nullptr));
+}
+
+TEST(Spawn, TutorialDropStepsAsideFromWhatStandsOnTheContact)
+{
+    TestWorld scene;
+    scene.CreateGround();
+    scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
+    // The tutorial's own drop, 0.05 m above the ground under the wheel's contact, is inside the wheel.
+    const SpawnPoint tutorial = TutorialDropPoint(*scene.world, b2Vec2(0.0f, 0.0f));
+    ASSERT_TRUE(tutorial.outside);
+    EXPECT_FALSE(DiscIsClear(*scene.world, tutorial.position, 0.01f, nullptr));
+    SpawnQuery query;
+    query.point = b2Vec2(0.0f, 0.0f);
+    query.slip = b2Vec2(-5.0f, 0.0f); // the tread moves back over the ground: trailing side is +x
+    query.radius = 0.01f;
+    const SpawnPoint drop = FindTutorialDropPoint(*scene.world, query, nullptr);
+    ASSERT_TRUE(drop.outside);
+    EXPECT_NEAR(drop.position.y, 0.05f, 1e-4f) << "still the tutorial's height over the ground";
+    EXPECT_GT(drop.position.x, 0.2f) << "beside the wheel, trailing side first";
+    EXPECT_LT(drop.position.x, 0.5f);
+    EXPECT_TRUE(DiscIsClear(*scene.world, drop.position, 0.01f, nullptr));
+}
+
+TEST(Spawn, TutorialPresetDropsNothingInsideTheWheelOrTheBox)
+{
+    // The tutorial preset on a wheel spinning in place and a box sliding: the same one particle per
+    // contact per step, none started inside.
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
+    b2Body* box = scene.CreateBox(b2Vec2(-10.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.Attach(TutorialPreset());
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(wheel, fx.FindMaterial("rubber"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    for (int i = 0; i < 120; ++i)
+    {
+        wheel->SetAngularVelocity(-25.0f);
+        wheel->SetLinearVelocity(b2Vec2(0.0f, wheel->GetLinearVelocity().y));
+        box->SetLinearVelocity(b2Vec2(4.0f, box->GetLinearVelocity().y));
+        scene.Step();
+    }
+    EXPECT_GE(scene.Spawned("smoke"), 115u);
+    EXPECT_GE(scene.Spawned("sparks"), 115u);
+    EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+    EXPECT_EQ(fx.Stats().spawnRejected, 0u);
+}
+
 } // namespace cfx::test

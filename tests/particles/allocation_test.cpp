@@ -119,6 +119,53 @@ TEST(ParticleAllocation, NoneOnceWarmedUpLowestLife)
     RunSteadyState(RecyclePolicy::lowestLife);
 }
 
+// Moving bodies that spread far apart and fall out of the world change the moving grid's bounds every
+// step; with as many bodies as before, the grid allocates nothing, however far they are spread.
+TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
+{
+    TestWorld scene;
+    scene.CreateGround(0.5f, 5.0f);
+    std::vector<b2Body*> bodies;
+    for (int i = 0; i < 40; ++i)
+    {
+        b2Body* body = scene.CreateBox(b2Vec2(-4.0f + 0.2f * static_cast<float>(i), 1.0f + 0.1f * static_cast<float>(i % 7)),
+                                       0.1f + 0.02f * static_cast<float>(i % 5), 0.1f, 0.5f);
+        bodies.push_back(body);
+    }
+    ParticleTypeDef type;
+    type.name = "dust";
+    type.lifetime = 100.0f;
+    ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1), ParticleBudget{500, RecyclePolicy::oldest});
+    for (int i = 0; i < 500; ++i)
+    {
+        particles.Spawn(ParticleSpawn{b2Vec2(-4.5f + 0.018f * static_cast<float>(i), 0.2f), b2Vec2(0.0f, 0.0f), 1.0f,
+                                      ParticleTypeId{0}});
+    }
+    auto step = [&]()
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        particles.Step(1.0f / 60.0f, scene.world->GetGravity());
+    };
+    for (int i = 0; i < 30; ++i)
+    {
+        step();
+    }
+    // Thrown apart at up to 50 m/s: they leave the 10 m ground and fall for ever.
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+        const float f = static_cast<float>(i) / static_cast<float>(bodies.size() - 1);
+        bodies[i]->SetLinearVelocity(b2Vec2(-50.0f + 100.0f * f, 20.0f * f));
+    }
+    const long before = g_allocations.load();
+    for (int i = 0; i < 600; ++i)
+    {
+        step();
+    }
+    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 600 steps of bodies spreading apart";
+    EXPECT_LT(bodies.front()->GetPosition().y, -100.0f); // they did fall out of the world
+    EXPECT_GT(particles.Count(), 0u);
+}
+
 TEST(ParticleAllocation, TheCounterCounts)
 {
     const long before = g_allocations.load();

@@ -1,0 +1,50 @@
+// contactfx internal: an honest check of where pool particles ended a step, independent of the sweeps.
+//
+// It asks Box2D itself (b2World::QueryAABB, b2Fixture::TestPoint, the fixtures' own edges), not the
+// particle system's cached geometry, so a bug in the cache or the sweeps cannot hide from it. Two ways a
+// particle can be wrong after a step:
+// - inside: its centre is inside a solid fixture it collides with (circles and polygons; edges and chains
+//   have no inside);
+// - crossed: the straight path of its centre from the start of the step to its end crosses a static edge
+//   or chain it collides with: a two-sided edge from either side, a one-sided edge or chain from its
+//   front (the side its normal points to) to its back.
+// Particles that do not collide, body-backed particles (Box2D moves those) and particles that died in the
+// step (life 0) are not checked. Costs a world query per particle: for tests, benchmarks and debugging,
+// never on by default (ParticleSystemOptions::checkParticles).
+#pragma once
+
+#include "particles/motion.h"
+
+#include <cstdint>
+#include <vector>
+
+class b2World;
+class b2Fixture;
+
+namespace cfx
+{
+struct BodyFilter;
+}
+
+namespace cfx::particles
+{
+
+struct CheckCounts
+{
+    std::uint64_t inside = 0;    ///< particles whose centre ended inside a solid fixture
+    std::uint64_t crossings = 0; ///< particles whose path crossed an edge or chain
+};
+
+class ParticleCheck
+{
+public:
+    /// Checks live particles [0, count) of `pool` (its start arrays set) against `world`, skipping bodies
+    /// `ignore` ignores; adds to `counts`. Allocates only when a query meets more fixtures than ever.
+    void Check(const b2World& world, const PoolArrays& pool, const TypeStep* types, std::uint32_t count,
+               const BodyFilter* ignore, CheckCounts& counts);
+
+private:
+    std::vector<const b2Fixture*> m_fixtures; // what one query met, each once
+};
+
+} // namespace cfx::particles
