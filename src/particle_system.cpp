@@ -2,13 +2,13 @@
 // and the shape of a step: scan the world (serial), advance runs of particles (one per thread), then
 // join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
 #include "contactfx/particle_system.h"
-#include "particle_system_access.h"
-#include "pointer_map.h"
 
+#include "particle_system_access.h"
 #include "particles/motion.h"
 #include "particles/particle_check.h"
 #include "particles/workers.h"
 #include "particles/world_geometry.h"
+#include "pointer_map.h"
 
 #include <algorithm>
 #include <array>
@@ -103,13 +103,18 @@ struct ParticleSystem::Impl
 
     particles::PoolArrays Arrays(std::uint32_t capacity)
     {
-        return particles::PoolArrays{positionX.data(), positionY.data(),
-                                     velocityX.data(), velocityY.data(),
-                                     life.data(),      type.data(),
-                                     clearance.data(), anyBodyBacked ? body.data() : nullptr,
+        return particles::PoolArrays{positionX.data(),
+                                     positionY.data(),
+                                     velocityX.data(),
+                                     velocityY.data(),
+                                     life.data(),
+                                     type.data(),
+                                     clearance.data(),
+                                     anyBodyBacked ? body.data() : nullptr,
                                      startX.empty() ? nullptr : startX.data(),
                                      startX.empty() ? nullptr : startY.data(),
-                                     capacity,         head};
+                                     capacity,
+                                     head};
     }
 
     void ReleaseBody(std::uint32_t slot)
@@ -307,9 +312,9 @@ struct StepJob
     static void Run(void* context, unsigned part)
     {
         auto& job = *static_cast<StepJob*>(context);
-        job.kept[part] = particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust,
-                                                 job.begin[part], job.begin[part + 1], job.dead[part],
-                                                 job.counts[part]);
+        job.kept[part] =
+            particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust, job.begin[part],
+                                    job.begin[part + 1], job.dead[part], job.counts[part]);
     }
 };
 

@@ -29,6 +29,6 @@ inline bool HaveRubeSamples()
         if (!::cfx::test::HaveRubeSamples())                                                                 \
         {                                                                                                    \
             GTEST_SKIP() << "the real RUBE scenes are not here (" << ::cfx::test::RubeSamplesDir().string()  \
-                         << " does not exist); the project's own scenes were tested instead";               \
+                         << " does not exist); the project's own scenes were tested instead";                \
         }                                                                                                    \
     } while (false)

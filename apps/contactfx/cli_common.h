@@ -26,8 +26,8 @@ struct RunOptions
     double seconds = 20.0; ///< simulated time, (0, 86400]
     double hz = 60.0;      ///< step rate, [1, 10000]
     std::uint64_t seed = 1;
-    std::string stats;  ///< stats file; empty: none
-    std::string events; ///< events file (JSON Lines); empty: none
+    std::string stats;           ///< stats file; empty: none
+    std::string events;          ///< events file (JSON Lines); empty: none
     bool checkParticles = false; ///< ParticleSystemOptions::checkParticles
 };
 

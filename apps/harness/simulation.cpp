@@ -25,8 +25,7 @@ float CheckedHz(float hz)
 
 Simulation::Simulation(const SimulationDef& def)
     : m_scene(LoadRubeFile(def.scene)), m_drive(def.drive), m_sceneFile(def.scene.string()), m_seed(def.seed),
-      m_particleOptions(def.particles),
-      m_dt(1.0f / CheckedHz(def.hz))
+      m_particleOptions(def.particles), m_dt(1.0f / CheckedHz(def.hz))
 {
     EffectsDef effectsDef;
     effectsDef.config = def.config;

@@ -9,8 +9,8 @@
 #include "contactfx/effects.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/rube.h"
-#include "harness/car.h"
 #include "contactfx/scene/scene_materials.h"
+#include "harness/car.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -8,8 +8,8 @@
 #pragma once
 
 #include "contactfx/render/camera.h"
-#include "harness/scenes.h"
 #include "event_log.h"
+#include "harness/scenes.h"
 #include "mouse_drag.h"
 
 #include <cstdint>

@@ -133,7 +133,8 @@ void ParticleBenchScene::StepParticles()
 
 void ParticleBenchScene::IntegrateParticles()
 {
-    detail::ParticleSystemAccess::IntegrateWithoutCollision(*m_particles, 1.0f / kBenchHz, m_world->GetGravity());
+    detail::ParticleSystemAccess::IntegrateWithoutCollision(*m_particles, 1.0f / kBenchHz,
+                                                            m_world->GetGravity());
 }
 
 void ParticleBenchScene::Respawn()

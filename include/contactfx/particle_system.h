@@ -16,9 +16,9 @@
 // fixtures are cached in a grid that is rebuilt whenever the static geometry changes (see
 // docs/particles.md for the contract); dynamic and kinematic bodies are met in their own frame, so a
 // moving body carries or pushes particles away, never leaves one inside and never pushes one into or
-// through static geometry: a particle with no free place is crushed (dies, and is counted). One-sided edges and chains
-// are solid only from their front. Particles never collide with each other. Body-backed particles are
-// Box2D bodies created and destroyed here (the tutorial's way, for particles that must push things);
+// through static geometry: a particle with no free place is crushed (dies, and is counted). One-sided edges
+// and chains are solid only from their front. Particles never collide with each other. Body-backed particles
+// are Box2D bodies created and destroyed here (the tutorial's way, for particles that must push things);
 // their position and velocity are read back each step. Large pools are split across threads; the result
 // does not depend on the number of threads, bit for bit. No allocation per step once warmed up.
 //

@@ -84,7 +84,8 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
-        if (!geometry.HasStatic() || !geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall))
+        if (!geometry.HasStatic() ||
+            !geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall))
         {
             position += push;
             break;

@@ -1,10 +1,10 @@
 // contactfx internal: particles against moving bodies, in each body's own frame (see world_geometry.h).
 #include "particles/world_geometry.h"
 
+#include <algorithm>
 #include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_edge_shape.h>
-#include <algorithm>
 #include <box2d/b2_polygon_shape.h>
 
 namespace cfx::particles
@@ -141,24 +141,24 @@ float WorldGeometry::MovingOverlap(b2Vec2 point, const ParticleSide& side) const
     const float r = side.radius;
     const b2AABB query = PathBox(point, point, r);
     float deepest = 0.0f;
-    m_movingGrid.Query(
-        query,
-        [&](std::uint32_t index)
-        {
-            const MovingShape& moving = m_movingShapes[index];
-            if ((moving.maskBits & side.categoryBits) == 0 || (moving.categoryBits & side.maskBits) == 0 ||
-                !BoxesOverlap(query, m_movingBoxes[index]))
-            {
-                return;
-            }
-            const MovingBody& body = m_movingBodies[moving.body];
-            const SweepInput in{b2MulT(body.after, point), b2Vec2(0.0f, 0.0f), r};
-            Touch touch;
-            if (SweepShape(in, *moving.shape, moving.child, touch) && touch.t == 0.0f)
-            {
-                deepest = std::max(deepest, touch.depth);
-            }
-        });
+    m_movingGrid.Query(query,
+                       [&](std::uint32_t index)
+                       {
+                           const MovingShape& moving = m_movingShapes[index];
+                           if ((moving.maskBits & side.categoryBits) == 0 ||
+                               (moving.categoryBits & side.maskBits) == 0 ||
+                               !BoxesOverlap(query, m_movingBoxes[index]))
+                           {
+                               return;
+                           }
+                           const MovingBody& body = m_movingBodies[moving.body];
+                           const SweepInput in{b2MulT(body.after, point), b2Vec2(0.0f, 0.0f), r};
+                           Touch touch;
+                           if (SweepShape(in, *moving.shape, moving.child, touch) && touch.t == 0.0f)
+                           {
+                               deepest = std::max(deepest, touch.depth);
+                           }
+                       });
     return deepest;
 }
 

@@ -118,7 +118,8 @@ void ParticleCheck::Check(const b2World& world, const PoolArrays& pool, const Ty
                 continue;
             }
             inside = inside || fixture->TestPoint(end);
-            crossed = crossed || (fixture->GetBody()->GetType() == b2_staticBody && PathCrosses(*fixture, start, end));
+            crossed = crossed ||
+                      (fixture->GetBody()->GetType() == b2_staticBody && PathCrosses(*fixture, start, end));
         }
         counts.inside += inside ? 1u : 0u;
         counts.crossings += crossed ? 1u : 0u;

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
 #include <box2d/b2_body.h>
 #include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
@@ -13,6 +12,7 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
+#include <cmath>
 #include <limits>
 
 namespace cfx::particles
@@ -182,7 +182,8 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         moving.turn = dt * moving.angularVelocity;
         moving.angleBefore = body->GetAngle() - moving.turn;
         const float pieces = std::ceil(std::abs(moving.turn) / kMaxTurn);
-        moving.pieces = pieces >= 1.0f ? static_cast<int>(std::min(pieces, static_cast<float>(kMaxPieces))) : 1;
+        moving.pieces =
+            pieces >= 1.0f ? static_cast<int>(std::min(pieces, static_cast<float>(kMaxPieces))) : 1;
         m_movingBodies.push_back(moving);
     }
     if (signature.Value() != m_signature)

@@ -1,56 +1,12 @@
-// Effects::Step is allocation-free once warmed up: this binary replaces the global operator new with one
-// that counts, runs a scene that exercises every path of the emitter (contacts handed from chain segment
-// to segment, body pairs coming and going, rate and burst emission, scrapes and impacts, rejected starts
-// in a crevice), warms it up, and asks for zero allocations over the same motion again. Box2D allocates
-// with b2Alloc (malloc), which this does not count; contactfx allocates only with new.
+// Effects::Step is allocation-free once warmed up: this binary counts every operator new
+// (allocation_counter.h), runs a scene that exercises every path of the emitter (contacts handed from chain
+// segment to segment, body pairs coming and going, rate and burst emission, scrapes and impacts, rejected
+// starts in a crevice), warms it up, and asks for zero allocations over the same motion again. Box2D
+// allocates with b2Alloc (malloc), which this does not count; contactfx allocates only with new.
+#include "allocation_counter.h"
 #include "test_world.h"
 
-#include <atomic>
-#include <cstdlib>
 #include <gtest/gtest.h>
-#include <new>
-
-namespace
-{
-
-std::atomic<long> g_allocations{0};
-
-void* Allocate(std::size_t size)
-{
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* memory = std::malloc(size == 0 ? 1 : size))
-    {
-        return memory;
-    }
-    throw std::bad_alloc();
-}
-
-} // namespace
-
-void* operator new(std::size_t size)
-{
-    return Allocate(size);
-}
-void* operator new[](std::size_t size)
-{
-    return Allocate(size);
-}
-void operator delete(void* memory) noexcept
-{
-    std::free(memory);
-}
-void operator delete[](void* memory) noexcept
-{
-    std::free(memory);
-}
-void operator delete(void* memory, std::size_t) noexcept
-{
-    std::free(memory);
-}
-void operator delete[](void* memory, std::size_t) noexcept
-{
-    std::free(memory);
-}
 
 namespace cfx::test
 {
@@ -148,9 +104,9 @@ TEST(EmissionAllocation, NoneOnceWarmedUp)
     ASSERT_GE(stats.rules[0].contactsMax, 3u);
 
     const std::uint64_t rejectedBefore = stats.spawnRejected;
-    const long before = g_allocations.load();
+    const long before = Allocations();
     run(480);
-    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 480 warmed-up steps";
+    EXPECT_EQ(Allocations() - before, 0) << "allocations in 480 warmed-up steps";
     EXPECT_GT(stats.spawnRejected, rejectedBefore);
 }
 

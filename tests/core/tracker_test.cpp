@@ -24,7 +24,9 @@ struct BoxOnGround : TestWorld
     }
     std::size_t Tracked(int rule = 0) const
     {
-        return detail::EffectsAccess::Tracker(*effects).Contacts(RuleId{static_cast<std::uint16_t>(rule)}).size();
+        return detail::EffectsAccess::Tracker(*effects)
+            .Contacts(RuleId{static_cast<std::uint16_t>(rule)})
+            .size();
     }
 
     b2Body* ground = nullptr;

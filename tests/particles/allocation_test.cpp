@@ -128,18 +128,20 @@ TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
     std::vector<b2Body*> bodies;
     for (int i = 0; i < 40; ++i)
     {
-        b2Body* body = scene.CreateBox(b2Vec2(-4.0f + 0.2f * static_cast<float>(i), 1.0f + 0.1f * static_cast<float>(i % 7)),
-                                       0.1f + 0.02f * static_cast<float>(i % 5), 0.1f, 0.5f);
+        b2Body* body = scene.CreateBox(
+            b2Vec2(-4.0f + 0.2f * static_cast<float>(i), 1.0f + 0.1f * static_cast<float>(i % 7)),
+            0.1f + 0.02f * static_cast<float>(i % 5), 0.1f, 0.5f);
         bodies.push_back(body);
     }
     ParticleTypeDef type;
     type.name = "dust";
     type.lifetime = 100.0f;
-    ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1), ParticleBudget{500, RecyclePolicy::oldest});
+    ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1),
+                             ParticleBudget{500, RecyclePolicy::oldest});
     for (int i = 0; i < 500; ++i)
     {
-        particles.Spawn(ParticleSpawn{b2Vec2(-4.5f + 0.018f * static_cast<float>(i), 0.2f), b2Vec2(0.0f, 0.0f), 1.0f,
-                                      ParticleTypeId{0}});
+        particles.Spawn(ParticleSpawn{b2Vec2(-4.5f + 0.018f * static_cast<float>(i), 0.2f),
+                                      b2Vec2(0.0f, 0.0f), 1.0f, ParticleTypeId{0}});
     }
     auto step = [&]()
     {

@@ -425,7 +425,8 @@ TEST(ParticlePool, ClearancesAreNotTrustedAfterMovingWithoutCollision)
     for (int i = 0; i < 25; ++i)
     {
         scene.world->Step(kDt, 8, 3);
-        detail::ParticleSystemAccess::IntegrateWithoutCollision(*scene.system, kDt, scene.world->GetGravity());
+        detail::ParticleSystemAccess::IntegrateWithoutCollision(*scene.system, kDt,
+                                                                scene.world->GetGravity());
     }
     ASSERT_EQ(scene.system->Count(), 2u) << "the short-lived ghost died";
     ASSERT_GT(scene.Position(0).y, 0.2f) << "the ball has not reached the ground yet";

@@ -234,7 +234,8 @@ TEST(RubeSamples, SharedFolder)
     CONTACTFX_REQUIRE_RUBE_SAMPLES();
     // The samples that are there took part in the parameterised tests above.
     const std::vector<std::filesystem::path> files = test::SampleFiles();
-    EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::filesystem::path& file)
+    EXPECT_TRUE(std::any_of(files.begin(), files.end(),
+                            [](const std::filesystem::path& file)
                             { return file.parent_path() == test::RubeSamplesDir(); }));
 }
 

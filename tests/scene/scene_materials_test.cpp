@@ -184,8 +184,8 @@ TEST(SceneMaterials, APlainRubeSceneGetsMaterialsFromTheDefaultAssignments)
     }
     const Scene plain = LoadRubeString(json.dump(), "plain.json");
     std::vector<std::string> names = MaterialNames(plain, DefaultPreset());
-    EXPECT_GT(std::count_if(names.begin(), names.end(), [](const std::string& name) { return name != "none"; }),
-              0);
+    EXPECT_GT(
+        std::count_if(names.begin(), names.end(), [](const std::string& name) { return name != "none"; }), 0);
 }
 
 TEST(SceneMaterials, PlainRubeSamplesGetMaterialsFromTheDefaultAssignments)
