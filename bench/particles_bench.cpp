@@ -10,10 +10,10 @@
 // of the kind a colliding step makes against the benchmark scene's chain, and one scan of the world for
 // changes, per iteration.
 //
-// Debris/200 and Debris/1000 run the debris scene (bench/scenes/debris_bench.h) after 180 warm-up steps
-// (the pool is full by then): each iteration is one whole step (world.Step, Effects::Step and the
-// dropper, which costs a few microseconds every third step), with counters world_ms and effects_ms (each
-// part's time per step) and effects_over_world (the ratio of their sums).
+// Debris/200 and Debris/1000 run the debris scene (bench/scenes/debris_bench.h) after the same 150 warm-up
+// steps as `contactfx bench debris` (the pool is full by then): each iteration is one whole step (world.Step,
+// Effects::Step and the dropper, which costs a few microseconds every third step), with counters world_ms and
+// effects_ms (each part's time per step) and effects_over_world (the ratio of their sums).
 #include "particles/world_geometry.h"
 #include "scenes/debris_bench.h"
 #include "scenes/particle_bench.h"
@@ -128,9 +128,8 @@ void StaticScan(benchmark::State& state)
 void Debris(benchmark::State& state)
 {
     using Clock = std::chrono::steady_clock;
-    constexpr int kDebrisWarmup = 180;
     cfx::bench::DebrisBenchScene scene(static_cast<std::uint32_t>(state.range(0)));
-    for (int i = 0; i < kDebrisWarmup; ++i)
+    for (std::uint32_t i = 0; i < cfx::bench::kDebrisWarmup; ++i)
     {
         scene.Step();
     }

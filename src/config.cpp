@@ -272,6 +272,11 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
                    "expected a number in [1, 4000000], found " + std::to_string(config.budget.capacity));
     }
     check.Enum("budget.recycle", static_cast<int>(config.budget.recycle), 2);
+    if (config.budget.contacts > 1000000)
+    {
+        check.Fail("budget.contacts",
+                   "expected a number in [0, 1000000], found " + std::to_string(config.budget.contacts));
+    }
     return out;
 }
 

@@ -39,6 +39,18 @@ ContactTracker::ContactTracker(const RuleTable& rules, const FixtureMaterials& m
 {
 }
 
+void ContactTracker::Reserve(std::uint32_t contacts)
+{
+    for (std::vector<TrackedContact>& list : m_byRule)
+    {
+        list.reserve(contacts);
+    }
+    m_index.Reserve(contacts);
+    m_pairs.reserve(contacts);
+    m_freePairs.reserve(contacts);
+    m_endedScrapes.reserve(contacts);
+}
+
 void ContactTracker::Track(b2Contact* contact, bool firstTouch)
 {
     if (IsTracked(contact) || !IsSolid(contact))

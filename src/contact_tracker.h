@@ -79,6 +79,9 @@ class ContactTracker final : public b2ContactListener
 public:
     /// `rules` and `materials` must outlive the tracker.
     ContactTracker(const RuleTable& rules, const FixtureMaterials& materials);
+    /// Makes room for `contacts` touching contacts (of any rules) and as many body pairs and ended
+    /// scrapes: up to that many, tracking allocates nothing.
+    void Reserve(std::uint32_t contacts);
 
     /// The application's listener, forwarded every callback; may be null.
     void SetForward(b2ContactListener* listener) { m_forward = listener; }

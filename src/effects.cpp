@@ -83,6 +83,7 @@ struct Effects::Internals
           emitter(config, def.seed)
     {
         tracker.SetForward(def.contactListener);
+        tracker.Reserve(config.budget.contacts);
     }
 
     FixtureMaterials materials;
@@ -98,6 +99,8 @@ Effects::Effects(b2World& world, const EffectsDef& def)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});
+    // A step reports at most a scrape end and an impact per body pair (budget.contacts of them).
+    m_events.reserve(std::size_t{2} * m_config.budget.contacts);
     m_world.SetContactListener(&m_internals->tracker);
     m_world.SetDestructionListener(&m_internals->destruction);
 }

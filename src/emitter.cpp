@@ -72,6 +72,11 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed) : m_random(see
     {
         m_ruleTypes.push_back(config.FindParticleType(rule.particleType));
     }
+    // Room for the configured number of touching contacts (budget.contacts), each a pair of its own
+    // with both manifold points at most.
+    m_pairSteps.reserve(config.budget.contacts);
+    m_order.reserve(config.budget.contacts);
+    m_samples.reserve(std::size_t{2} * config.budget.contacts);
 }
 
 void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker,

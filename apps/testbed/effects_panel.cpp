@@ -249,6 +249,13 @@ bool RulesTab(EffectsConfig& draft)
         draft.budget.capacity = static_cast<std::uint32_t>(std::max(capacity, 0));
         finished = true;
     }
+    int contacts = static_cast<int>(draft.budget.contacts);
+    ImGui::InputInt("budget contacts", &contacts, 64, 1024);
+    if (Finished())
+    {
+        draft.budget.contacts = static_cast<std::uint32_t>(std::max(contacts, 0));
+        finished = true;
+    }
     return finished;
 }
 

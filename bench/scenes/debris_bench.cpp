@@ -342,21 +342,27 @@ std::uint64_t DebrisBenchScene::StateHash() const
     return hash.Value();
 }
 
-DebrisBenchResult MeasureDebris(std::uint32_t boxes, std::uint32_t steps, std::uint64_t seed)
+DebrisBenchResult MeasureDebris(std::uint32_t boxes, std::uint32_t steps, std::uint32_t warmup,
+                                std::uint64_t seed)
 {
     using Clock = std::chrono::steady_clock;
     DebrisBenchResult result;
     result.boxes = boxes;
     result.steps = steps;
+    result.warmup = warmup;
     DebrisBenchScene scene(boxes, seed);
     result.capacity = scene.Fx().Config().budget.capacity;
+    for (std::uint32_t i = 0; i < warmup; ++i)
+    {
+        scene.Step();
+    }
 
     std::vector<double> world, effects;
     world.reserve(steps);
     effects.reserve(steps);
     double worldSum = 0.0, effectsSum = 0.0, perParticleSum = 0.0;
     std::uint32_t stepsWithParticles = 0;
-    std::uint64_t recycled = 0;
+    std::uint64_t recycled = scene.Fx().Stats().recycled;
     for (std::uint32_t i = 0; i < steps; ++i)
     {
         const Clock::time_point start = Clock::now();

@@ -31,6 +31,10 @@ struct ParticleBudget
 {
     std::uint32_t capacity = 4096; ///< hard cap on live particles, 1 .. 4,000,000
     RecyclePolicy recycle = RecyclePolicy::oldest;
+    /// Touching contacts (and body pairs) Effects makes room for when it is created, 0 .. 1,000,000:
+    /// with no more touching at once, neither the contact callbacks nor Effects::Step allocate. More
+    /// allocate once, as they first happen.
+    std::uint32_t contacts = 1024;
 
     bool operator==(const ParticleBudget&) const = default;
 };

@@ -350,11 +350,13 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
     if (const Json* budget = top.Object("budget"))
     {
         ObjectReader reader(*budget, "budget", diagnostics);
-        static constexpr const char* kBudgetKeys[] = {"capacity", "recycle"};
+        static constexpr const char* kBudgetKeys[] = {"capacity", "recycle", "contacts"};
         CheckKnownKeys(*budget, "budget", {}, kBudgetKeys, diagnostics);
         config.budget.capacity = static_cast<std::uint32_t>(
             reader.Int("capacity", static_cast<int>(config.budget.capacity), 0, 1 << 30));
         ReadEnum(reader, "recycle", kRecyclePolicies, config.budget.recycle);
+        config.budget.contacts = static_cast<std::uint32_t>(
+            reader.Int("contacts", static_cast<int>(config.budget.contacts), 0, 1 << 30));
     }
     return config;
 }
@@ -481,7 +483,8 @@ std::string SaveEffectsString(const EffectsConfig& config)
         root["assignments"].push_back(out);
     }
     root["budget"] = Json{{"capacity", config.budget.capacity},
-                          {"recycle", NameOf(kRecyclePolicies, config.budget.recycle)}};
+                          {"recycle", NameOf(kRecyclePolicies, config.budget.recycle)},
+                          {"contacts", config.budget.contacts}};
     return root.dump(2) + "\n";
 }
 

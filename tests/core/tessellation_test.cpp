@@ -250,20 +250,4 @@ TEST(EmissionTessellation, SameSeedSameParticlesOnAChain)
     EXPECT_EQ(first, second);
 }
 
-// Measured numbers, not a check (--gtest_also_run_disabled_tests): sparks per ground and step rate.
-TEST(EmissionTessellation, DISABLED_Report)
-{
-    for (float hz : {30.0f, 60.0f, 120.0f})
-    {
-        for (Ground ground : {Ground::box, Ground::chain2m, Ground::chain05m, Ground::boxes05m})
-        {
-            const SlideResult d = Slide(DefaultPreset(), ground, SlideSetup{.hz = hz});
-            const SlideResult t = Slide(TutorialPreset(), ground, SlideSetup{.hz = hz});
-            std::cout << hz << " Hz, " << Name(ground) << ": default " << d.sparks << " sparks (contacts max "
-                      << d.contactsMax << "), tutorial " << t.sparks << " (contacts max " << t.contactsMax
-                      << ")\n";
-        }
-    }
-}
-
 } // namespace cfx::test
