@@ -17,24 +17,7 @@ enum class Ground
     box,
     chain2m,
     chain05m,
-    boxes05m,
 };
-
-const char* Name(Ground ground)
-{
-    switch (ground)
-    {
-    case Ground::box:
-        return "one box";
-    case Ground::chain2m:
-        return "chain of 2 m segments";
-    case Ground::chain05m:
-        return "chain of 0.5 m segments";
-    case Ground::boxes05m:
-        return "0.5 m boxes side by side";
-    }
-    return "?";
-}
 
 // A static concrete ground whose top is y = 0, from x = -60 to 60.
 b2Body* MakeGround(TestWorld& scene, Ground ground)
@@ -45,19 +28,6 @@ b2Body* MakeGround(TestWorld& scene, Ground ground)
     }
     b2BodyDef def;
     b2Body* body = scene.world->CreateBody(&def);
-    if (ground == Ground::boxes05m)
-    {
-        for (int i = 0; i < 240; ++i)
-        {
-            b2PolygonShape piece;
-            piece.SetAsBox(0.25f, 1.0f, b2Vec2(-60.0f + 0.25f + 0.5f * static_cast<float>(i), -1.0f), 0.0f);
-            b2FixtureDef fixture;
-            fixture.shape = &piece;
-            fixture.friction = 0.8f;
-            body->CreateFixture(&fixture);
-        }
-        return body;
-    }
     const float segment = ground == Ground::chain2m ? 2.0f : 0.5f;
     std::vector<b2Vec2> points;
     const int count = static_cast<int>(std::lround(120.0f / segment));
