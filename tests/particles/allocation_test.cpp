@@ -2,54 +2,10 @@
 // warms a particle system up (static cache built, helper thread started, vectors grown), then steps it
 // with spawning, dying, recycling, moving bodies and both threads, and asks for zero allocations.
 // Body-backed particles are Box2D's to allocate (its block allocator), so they are not part of this.
+#include "allocation_counter.h"
 #include "test_world.h"
 
-#include <atomic>
-#include <cstdlib>
 #include <gtest/gtest.h>
-#include <new>
-
-namespace
-{
-
-std::atomic<long> g_allocations{0};
-
-void* Allocate(std::size_t size)
-{
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* memory = std::malloc(size == 0 ? 1 : size))
-    {
-        return memory;
-    }
-    throw std::bad_alloc();
-}
-
-} // namespace
-
-void* operator new(std::size_t size)
-{
-    return Allocate(size);
-}
-void* operator new[](std::size_t size)
-{
-    return Allocate(size);
-}
-void operator delete(void* memory) noexcept
-{
-    std::free(memory);
-}
-void operator delete[](void* memory) noexcept
-{
-    std::free(memory);
-}
-void operator delete(void* memory, std::size_t) noexcept
-{
-    std::free(memory);
-}
-void operator delete[](void* memory, std::size_t) noexcept
-{
-    std::free(memory);
-}
 
 namespace cfx::test
 {
@@ -98,12 +54,12 @@ void RunSteadyState(RecyclePolicy policy)
     }
     ASSERT_EQ(particles.ThreadsUsed(), 2u);
     ASSERT_GT(particles.Recycled(), 0u);
-    const long before = g_allocations.load();
+    const long before = Allocations();
     for (int i = 0; i < 120; ++i)
     {
         step();
     }
-    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 120 warmed-up steps";
+    EXPECT_EQ(Allocations() - before, 0) << "allocations in 120 warmed-up steps";
     EXPECT_GT(box->GetPosition().y, -1.0f);
 }
 
@@ -158,22 +114,22 @@ TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
         const float f = static_cast<float>(i) / static_cast<float>(bodies.size() - 1);
         bodies[i]->SetLinearVelocity(b2Vec2(-50.0f + 100.0f * f, 20.0f * f));
     }
-    const long before = g_allocations.load();
+    const long before = Allocations();
     for (int i = 0; i < 600; ++i)
     {
         step();
     }
-    EXPECT_EQ(g_allocations.load() - before, 0) << "allocations in 600 steps of bodies spreading apart";
+    EXPECT_EQ(Allocations() - before, 0) << "allocations in 600 steps of bodies spreading apart";
     EXPECT_LT(bodies.front()->GetPosition().y, -100.0f); // they did fall out of the world
     EXPECT_GT(particles.Count(), 0u);
 }
 
 TEST(ParticleAllocation, TheCounterCounts)
 {
-    const long before = g_allocations.load();
+    const long before = Allocations();
     auto* probe = new std::vector<int>(10);
     delete probe;
-    EXPECT_EQ(g_allocations.load() - before, 2);
+    EXPECT_EQ(Allocations() - before, 2);
 }
 
 } // namespace cfx::test

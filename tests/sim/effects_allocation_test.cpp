@@ -46,7 +46,8 @@ TEST(EffectsAllocation, NoneInTheDemoAfterItsFirstSecond)
         def.hz = hz;
         Simulation simulation(def);
         const int steps = static_cast<int>(20.0f * hz);
-        EXPECT_EQ(AllocationsAfterWarmUp(steps, static_cast<int>(hz), [&] { StepScene(tutorial, simulation); }), 0)
+        EXPECT_EQ(
+            AllocationsAfterWarmUp(steps, static_cast<int>(hz), [&] { StepScene(tutorial, simulation); }), 0)
             << hz << " Hz";
         EXPECT_GT(simulation.GetEffects().Stats().liveMax, 0u);
     }
