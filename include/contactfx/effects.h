@@ -54,7 +54,7 @@ struct EffectsDef
     b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null
     EffectEventListener* eventListener = nullptr;         ///< receives each step's events, may be null
-    ParticleSystemOptions particles;                      ///< threads, and the particle check
+    ParticleSystemOptions particles{};                    ///< threads, and the particle check
 };
 
 class Effects
