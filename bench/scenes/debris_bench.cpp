@@ -103,7 +103,8 @@ double Milliseconds(std::chrono::steady_clock::duration duration)
 
 } // namespace
 
-DebrisBenchScene::DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed, std::uint32_t capacity)
+DebrisBenchScene::DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed, std::uint32_t capacity,
+                                   const ParticleSystemOptions& particles)
     : m_world(std::make_unique<b2World>(b2Vec2(0.0f, -10.0f))), m_random(seed)
 {
     EffectsDef def;
@@ -113,6 +114,7 @@ DebrisBenchScene::DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed, std:
         def.config.budget.capacity = capacity;
     }
     def.seed = seed;
+    def.particles = particles;
     m_effects = std::make_unique<Effects>(*m_world, def);
     const std::uint32_t count = std::max<std::uint32_t>(boxes, 1);
     const auto columns = std::max(

@@ -45,8 +45,10 @@ inline constexpr std::uint32_t kDebrisWarmup = 150;
 class DebrisBenchScene
 {
 public:
-    /// The world, its `boxes` boxes in the bin and the effects layer (capacity 0: the preset's).
-    explicit DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed = 1, std::uint32_t capacity = 0);
+    /// The world, its `boxes` boxes in the bin and the effects layer (capacity 0: the preset's; `particles`:
+    /// threads and checks of the effects' particle system).
+    explicit DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed = 1, std::uint32_t capacity = 0,
+                              const ParticleSystemOptions& particles = {});
     ~DebrisBenchScene();
     DebrisBenchScene(const DebrisBenchScene&) = delete;
     DebrisBenchScene& operator=(const DebrisBenchScene&) = delete;
