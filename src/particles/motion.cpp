@@ -194,7 +194,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
     for (std::uint32_t k = 0; k < count; ++k)
     {
         const std::uint32_t slot = listed.slot[k];
-        const std::uint32_t rests = trust.resting & (pool.clearance[slot] == kResting) ? 1u : 0u;
+        const std::uint32_t rests = (trust.resting & (pool.clearance[slot] == kResting)) ? 1u : 0u;
         const std::uint32_t mask = 0u - rests;
         pool.positionX[slot] = Select(mask, listed.startX[k], pool.positionX[slot]);
         pool.positionY[slot] = Select(mask, listed.startY[k], pool.positionY[slot]);
