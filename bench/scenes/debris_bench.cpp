@@ -137,9 +137,9 @@ DebrisBenchScene::DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed, std:
         b2BodyDef body;
         body.type = b2_dynamicBody;
         body.position.Set(-m_binHalfWidth + 0.05f + kColumnWidth * (static_cast<float>(column) + 0.5f) +
-                              Uniform(-0.03f, 0.03f),
+                              m_random.Uniform(-0.03f, 0.03f),
                           kRowHeight * (static_cast<float>(row) + 0.5f) + 0.02f);
-        body.angle = Uniform(-0.05f, 0.05f);
+        body.angle = m_random.Uniform(-0.05f, 0.05f);
         body.userData.pointer = i;
         b2Body* box = m_world->CreateBody(&body);
         box->CreateFixture(&fixture);
@@ -178,18 +178,6 @@ void DebrisBenchScene::BuildStatic()
     }
     const MaterialId concrete = m_effects->FindMaterial("concrete");
     m_effects->SetMaterial(ground, concrete);
-}
-
-float DebrisBenchScene::Uniform(float low, float high)
-{
-    // SplitMix64: tiny and the same everywhere.
-    m_random += 0x9e3779b97f4a7c15ULL;
-    std::uint64_t z = m_random;
-    z = (z ^ (z >> 30u)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27u)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31u;
-    const float unit = static_cast<float>(z >> 40u) * (1.0f / 16777216.0f);
-    return low + (high - low) * unit;
 }
 
 void DebrisBenchScene::StepWorld()
@@ -262,9 +250,9 @@ void DebrisBenchScene::Drop()
     const Ramp& ramp = m_upperRamps[m_dropTurn % m_upperRamps.size()];
     const b2Vec2 normal =
         ramp.down.x > 0.0f ? b2Vec2(-ramp.down.y, ramp.down.x) : b2Vec2(ramp.down.y, -ramp.down.x);
-    const float along = 0.6f + Uniform(0.0f, 0.4f);
-    const float speed = kDropSpeed + Uniform(-1.0f, 1.0f);
-    const float spin = Uniform(-0.5f, 0.5f);
+    const float along = 0.6f + m_random.Uniform(0.0f, 0.4f);
+    const float speed = kDropSpeed + m_random.Uniform(-1.0f, 1.0f);
+    const float spin = m_random.Uniform(-0.5f, 0.5f);
     const b2Vec2 centre = ramp.top + along * ramp.down + (kBoxHalf + 0.01f) * normal;
     if (!SpotIsFree(centre))
     {

@@ -27,6 +27,7 @@
 #pragma once
 
 #include "contactfx/effects.h"
+#include "scenes/split_mix.h"
 
 #include <box2d/b2_world.h>
 #include <cstdint>
@@ -92,7 +93,6 @@ private:
     void BuildBoxes();
     b2Body* PickBoxToDrop() const;
     bool SpotIsFree(b2Vec2 centre) const;
-    float Uniform(float low, float high);
 
     std::unique_ptr<b2World> m_world;
     std::unique_ptr<Effects> m_effects; // destroyed before the world
@@ -100,7 +100,7 @@ private:
     std::vector<Ramp> m_upperRamps; // left, right
     float m_binHalfWidth = 0.0f;
     float m_wallTop = 0.0f;
-    std::uint64_t m_random;
+    SplitMix64 m_random;
     std::uint64_t m_steps = 0;
     std::uint64_t m_dropped = 0;
     std::uint32_t m_dropTurn = 0;

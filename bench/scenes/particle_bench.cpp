@@ -95,27 +95,15 @@ void ParticleBenchScene::Populate(std::uint32_t count, ParticleBackend backend,
                                                    ParticleBudget{count, RecyclePolicy::oldest}, options);
     for (std::uint32_t i = 0; i < count; ++i)
     {
-        SpawnOne(1.0f - Uniform(0.0f, 1.0f));
+        SpawnOne(1.0f - m_random.Uniform(0.0f, 1.0f));
     }
-}
-
-float ParticleBenchScene::Uniform(float low, float high)
-{
-    // SplitMix64: tiny and the same everywhere.
-    m_random += 0x9e3779b97f4a7c15ULL;
-    std::uint64_t z = m_random;
-    z = (z ^ (z >> 30u)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27u)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31u;
-    const float unit = static_cast<float>(z >> 40u) * (1.0f / 16777216.0f);
-    return low + (high - low) * unit;
 }
 
 void ParticleBenchScene::SpawnOne(float life)
 {
     ParticleSpawn spawn;
-    spawn.position = b2Vec2(Uniform(-60.0f, 60.0f), Uniform(2.0f, 20.0f));
-    spawn.velocity = b2Vec2(Uniform(-5.0f, 5.0f), Uniform(-5.0f, 5.0f));
+    spawn.position = b2Vec2(m_random.Uniform(-60.0f, 60.0f), m_random.Uniform(2.0f, 20.0f));
+    spawn.velocity = b2Vec2(m_random.Uniform(-5.0f, 5.0f), m_random.Uniform(-5.0f, 5.0f));
     spawn.life = life;
     spawn.type = ParticleTypeId{0};
     m_particles->Spawn(spawn);

@@ -11,6 +11,7 @@
 
 #include "contactfx/particle_system.h"
 #include "contactfx/particle_types.h"
+#include "scenes/split_mix.h"
 
 #include <box2d/b2_world.h>
 #include <cstdint>
@@ -50,13 +51,12 @@ public:
 
 private:
     void SpawnOne(float life);
-    float Uniform(float low, float high);
 
     std::unique_ptr<b2World> m_world;
     std::vector<ParticleTypeDef> m_types;
     std::unique_ptr<ParticleSystem> m_particles; // destroyed before the world
     std::uint32_t m_count = 0;
-    std::uint64_t m_random;
+    SplitMix64 m_random;
 };
 
 /// What one measured run gives.
