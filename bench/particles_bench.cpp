@@ -127,7 +127,6 @@ void StaticScan(benchmark::State& state)
 
 void Debris(benchmark::State& state)
 {
-    using Clock = std::chrono::steady_clock;
     cfx::bench::DebrisBenchScene scene(static_cast<std::uint32_t>(state.range(0)));
     for (std::uint32_t i = 0; i < cfx::bench::kDebrisWarmup; ++i)
     {
@@ -136,16 +135,9 @@ void Debris(benchmark::State& state)
     double worldSeconds = 0.0, effectsSeconds = 0.0;
     for (auto _ : state)
     {
-        const Clock::time_point start = Clock::now();
-        scene.StepWorld();
-        const Clock::time_point worldDone = Clock::now();
-        scene.StepEffects();
-        const Clock::time_point end = Clock::now();
-        scene.Drop();
-        const double world = std::chrono::duration<double>(worldDone - start).count();
-        const double effects = std::chrono::duration<double>(end - worldDone).count();
-        worldSeconds += world;
-        effectsSeconds += effects;
+        const cfx::bench::DebrisBenchScene::StepSeconds seconds = scene.TimedStep();
+        worldSeconds += seconds.world;
+        effectsSeconds += seconds.effects;
     }
     state.counters["world_ms"] = benchmark::Counter(1.0e3 * worldSeconds, benchmark::Counter::kAvgIterations);
     state.counters["effects_ms"] =

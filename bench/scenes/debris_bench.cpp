@@ -96,11 +96,6 @@ private:
     float m_reach;
 };
 
-double Milliseconds(std::chrono::steady_clock::duration duration)
-{
-    return std::chrono::duration<double, std::milli>(duration).count();
-}
-
 } // namespace
 
 DebrisBenchScene::DebrisBenchScene(std::uint32_t boxes, std::uint64_t seed, std::uint32_t capacity,
@@ -206,6 +201,19 @@ void DebrisBenchScene::Step()
     StepWorld();
     StepEffects();
     Drop();
+}
+
+DebrisBenchScene::StepSeconds DebrisBenchScene::TimedStep()
+{
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    StepWorld();
+    const Clock::time_point worldDone = Clock::now();
+    StepEffects();
+    const Clock::time_point end = Clock::now();
+    Drop();
+    return StepSeconds{std::chrono::duration<double>(worldDone - start).count(),
+                       std::chrono::duration<double>(end - worldDone).count()};
 }
 
 b2Body* DebrisBenchScene::PickBoxToDrop() const
@@ -335,7 +343,6 @@ std::uint64_t DebrisBenchScene::StateHash() const
 DebrisBenchResult MeasureDebris(std::uint32_t boxes, std::uint32_t steps, std::uint32_t warmup,
                                 std::uint64_t seed)
 {
-    using Clock = std::chrono::steady_clock;
     DebrisBenchResult result;
     result.boxes = boxes;
     result.steps = steps;
@@ -355,14 +362,9 @@ DebrisBenchResult MeasureDebris(std::uint32_t boxes, std::uint32_t steps, std::u
     std::uint64_t recycled = scene.Fx().Stats().recycled;
     for (std::uint32_t i = 0; i < steps; ++i)
     {
-        const Clock::time_point start = Clock::now();
-        scene.StepWorld();
-        const Clock::time_point worldDone = Clock::now();
-        scene.StepEffects();
-        const Clock::time_point end = Clock::now();
-        scene.Drop();
-        world.push_back(Milliseconds(worldDone - start));
-        effects.push_back(Milliseconds(end - worldDone));
+        const DebrisBenchScene::StepSeconds seconds = scene.TimedStep();
+        world.push_back(1.0e3 * seconds.world);
+        effects.push_back(1.0e3 * seconds.effects);
         worldSum += world.back();
         effectsSum += effects.back();
         const std::uint32_t live = scene.LiveDuringLastStep();
