@@ -16,9 +16,21 @@ constexpr std::size_t kMinCells = 1024;
 constexpr std::size_t kCellsPerBox = 16;
 constexpr float kCellPerExtent = 1.0f;
 
+// The part of `region` inside `box` (which it overlaps): an item inside its box comes into `region`
+// exactly when it comes into that part, and that part is finite where the region's sides at the grid's
+// edges are not.
+b2AABB Within(const b2AABB& region, const b2AABB& box)
+{
+    b2AABB part;
+    part.lowerBound = b2Max(region.lowerBound, box.lowerBound);
+    part.upperBound = b2Min(region.upperBound, box.upperBound);
+    return part;
+}
+
 } // namespace
 
-void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t maxItemsPerBox)
+void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t maxItemsPerBox, Touches touches,
+                 const void* context)
 {
     m_listing = listing;
     m_items.clear();
@@ -39,8 +51,13 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     }
     auto middle = m_scratch.begin() + static_cast<std::ptrdiff_t>(m_scratch.size() / 2);
     std::nth_element(m_scratch.begin(), middle, m_scratch.end());
-    float cell = std::max(kCellPerExtent * *middle, kMinCell);
+    float cell = kCellPerExtent * *middle;
     const b2Vec2 size = bounds.upperBound - bounds.lowerBound;
+    if (touches != nullptr)
+    {
+        cell = std::min(cell, std::sqrt(size.x * size.y / static_cast<float>(kMinCells)));
+    }
+    cell = std::max(cell, kMinCell);
     const std::size_t maxCells = std::max(kMinCells, kCellsPerBox * boxes.size());
     m_lower = bounds.lowerBound;
     m_upper = bounds.upperBound;
@@ -75,9 +92,11 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
 
     const std::size_t cells = static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows);
     m_cellStart.assign(cells + 1, 0);
-    // The cells listing a box: those it overlaps, and `spread` more on every side.
-    auto forCells = [&](const b2AABB& box, auto&& use)
+    // The cells listing a box: those it overlaps, and `spread` more on every side; with `touches`, only
+    // those whose covered region the item comes into.
+    auto forCells = [&](std::uint32_t index, auto&& use)
     {
+        const b2AABB& box = boxes[index];
         const int x0 = std::max(Column(box.lowerBound.x) - spread, 0);
         const int x1 = std::min(Column(box.upperBound.x) + spread, m_columns - 1);
         const int y0 = std::max(Row(box.lowerBound.y) - spread, 0);
@@ -86,13 +105,18 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         {
             for (int x = x0; x <= x1; ++x)
             {
-                use(static_cast<std::size_t>(y * m_columns + x));
+                if (touches == nullptr ||
+                    touches(context, index,
+                            Within(CellsBox(x - spread, x + spread, y - spread, y + spread), box)))
+                {
+                    use(static_cast<std::size_t>(y * m_columns + x));
+                }
             }
         }
     };
-    for (const b2AABB& box : boxes)
+    for (std::uint32_t index = 0; index < boxes.size(); ++index)
     {
-        forCells(box, [&](std::size_t c) { ++m_cellStart[c + 1]; });
+        forCells(index, [&](std::size_t c) { ++m_cellStart[c + 1]; });
     }
     for (std::size_t c = 0; c < cells; ++c)
     {
@@ -102,7 +126,7 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     // Fill using the row starts as cursors, then shift them back.
     for (std::uint32_t index = 0; index < boxes.size(); ++index)
     {
-        forCells(boxes[index], [&](std::size_t c) { m_items[m_cellStart[c]++] = index; });
+        forCells(index, [&](std::size_t c) { m_items[m_cellStart[c]++] = index; });
     }
     for (std::size_t c = cells; c > 0; --c)
     {

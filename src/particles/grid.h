@@ -36,13 +36,23 @@ public:
         neighbourhood ///< also in the cells next to those (their 3 x 3 blocks)
     };
 
+    /// Whether item `item` (whose box overlaps `region`) comes into `region` itself: lets a grid of
+    /// large shapes that fill little of their boxes (a long rotated ramp) list each only in the cells it
+    /// really comes near. Must be true whenever the item overlaps `region` (false only when it cannot).
+    using Touches = bool (*)(const void* context, std::uint32_t item, const b2AABB& region);
+
     /// Lists every box as `listing` says. The cell size follows the boxes' median extent, grown until
     /// there are at most max(1024, 16 * boxes) cells and, when `maxItemsPerBox` > 0, at most that many
     /// list entries per box on average (times the 3 x 3 block for a neighbourhood listing). With
     /// `maxItemsPerBox` > 0 a build allocates only when it has more boxes than any earlier one, however
     /// the boxes are spread (for the moving bodies, which spread out and fall out of the world).
+    ///
+    /// With `touches`, a cell lists an item only when the item comes into the region the cell's list
+    /// covers (the cell, or its 3 x 3 block for a neighbourhood listing), and the cells are no larger than
+    /// 1,024 of them over the bounds would be: few large shapes then get cells about as fine as many
+    /// small ones, each cell listing only what is near it.
     void Build(std::span<const b2AABB> boxes, Listing listing = Listing::overlapped,
-               std::size_t maxItemsPerBox = 0);
+               std::size_t maxItemsPerBox = 0, Touches touches = nullptr, const void* context = nullptr);
 
     /// Calls visit(item) for every item whose box overlaps `box`, and some others; an item may be
     /// visited more than once. Returns a box that contains `box`, its sides on the grid's edges pushed to

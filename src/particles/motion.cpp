@@ -100,12 +100,21 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
     return geometry.MovingOverlap(position, side) <= 0.5f * side.radius;
 }
 
-// Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `resting`:
-// trust the resting mark and skip the static sweep. Returns its clearance after the step (see
-// PoolArrays): kResting at a fixed point of the static sweep, kUnknownClearance after a touch.
-// `crushed`: set when a moving body squeezed it against other geometry with no free place (see Push).
-float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, bool resting, b2Vec2& position,
-              b2Vec2& velocity, bool& crushed)
+// What a particle's mark says of its motion against the static geometry this step.
+enum class StaticPart : std::uint8_t
+{
+    sweep,   ///< nothing known: sweep it
+    resting, ///< trusted to rest: it stays where it is, at rest (the sweep would give the same bits)
+    clear,   ///< its clearance covers the step: it flies freely (the sweep would give the same bits)
+};
+
+// Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `part`: what
+// its mark says; `mark`: that mark, what is left of its clearance after this step's flight. Returns its
+// clearance after the step (see PoolArrays): kResting at a fixed point of the static sweep,
+// kUnknownClearance after a touch. `crushed`: set when a moving body squeezed it against other geometry
+// with no free place (see Push).
+float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, StaticPart part, float mark,
+              b2Vec2& position, b2Vec2& velocity, bool& crushed)
 {
     const b2Vec2 start = position;
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
@@ -113,10 +122,15 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, boo
     float clearance = kUnknownClearance;
     bool fixedPoint = false;
     bool touched = false;
-    if (resting)
+    if (part == StaticPart::resting)
     {
         velocity.SetZero();
         fixedPoint = true;
+    }
+    else if (part == StaticPart::clear)
+    {
+        position += dt * velocity; // as pass 1 flew it
+        clearance = mark;
     }
     else if (geometry.HasStatic())
     {
@@ -215,11 +229,15 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
             pool.clearance[slot] = kNothingToTouch;
             continue;
         }
-        const bool resting = trust.resting && pool.clearance[slot] == kResting;
+        // Listed for a moving body's sake only, it may still be clear of the static geometry.
+        const float mark = pool.clearance[slot];
+        const StaticPart part = trust.resting && mark == kResting ? StaticPart::resting
+                                : trust.clearance && mark >= 0.0f ? StaticPart::clear
+                                                                  : StaticPart::sweep;
         b2Vec2 position(listed.startX[k], listed.startY[k]);
         b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
         bool crushed = false;
-        const float clearance = Collide(type, geometry, dt, resting, position, velocity, crushed);
+        const float clearance = Collide(type, geometry, dt, part, mark, position, velocity, crushed);
         if (crushed)
         {
             // Dies where it was squeezed (outside the static geometry): life 0 draws nothing, and the

@@ -115,6 +115,63 @@ SurfaceMaterial MaterialOf(const b2Fixture& fixture)
                            fixture.GetRestitutionThreshold()};
 }
 
+// A box grown by `by` (m) on every side.
+b2AABB Grown(const b2AABB& box, float by)
+{
+    b2AABB grown;
+    grown.lowerBound = box.lowerBound - b2Vec2(by, by);
+    grown.upperBound = box.upperBound + b2Vec2(by, by);
+    return grown;
+}
+
+bool HasSolidFixture(const b2Body& body)
+{
+    for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        if (!fixture->IsSensor())
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+// How far (m) a shape's child reaches from `center` (in the shape's frame).
+float Reach(const b2Shape& shape, int child, b2Vec2 center)
+{
+    switch (shape.GetType())
+    {
+    case b2Shape::e_circle:
+    {
+        const auto& circle = static_cast<const b2CircleShape&>(shape);
+        return b2Distance(circle.m_p, center) + circle.m_radius;
+    }
+    case b2Shape::e_polygon:
+    {
+        const auto& polygon = static_cast<const b2PolygonShape&>(shape);
+        float reach = 0.0f;
+        for (int i = 0; i < polygon.m_count; ++i)
+        {
+            reach = std::max(reach, b2Distance(polygon.m_vertices[i], center));
+        }
+        return reach;
+    }
+    case b2Shape::e_edge:
+    {
+        const auto& edge = static_cast<const b2EdgeShape&>(shape);
+        return std::max(b2Distance(edge.m_vertex1, center), b2Distance(edge.m_vertex2, center));
+    }
+    case b2Shape::e_chain:
+    {
+        b2EdgeShape edge;
+        static_cast<const b2ChainShape&>(shape).GetChildEdge(&edge, child);
+        return std::max(b2Distance(edge.m_vertex1, center), b2Distance(edge.m_vertex2, center));
+    }
+    default:
+        return b2_maxFloat;
+    }
+}
+
 } // namespace
 
 namespace
@@ -145,27 +202,7 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         {
             continue;
         }
-        const auto bodyIndex = static_cast<std::uint32_t>(m_movingBodies.size());
-        bool any = false;
-        for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
-        {
-            if (fixture->IsSensor())
-            {
-                continue;
-            }
-            const auto material = static_cast<std::uint32_t>(m_movingMaterials.size());
-            m_movingMaterials.push_back(MaterialOf(*fixture));
-            const b2Filter& filter = fixture->GetFilterData();
-            const int children = fixture->GetShape()->GetChildCount();
-            for (int child = 0; child < children; ++child)
-            {
-                m_movingShapes.push_back(MovingShape{fixture->GetShape(), child, bodyIndex, material,
-                                                     filter.categoryBits, filter.maskBits});
-                m_movingBoxes.push_back(fixture->GetAABB(child));
-            }
-            any = true;
-        }
-        if (!any)
+        if (!HasSolidFixture(*body))
         {
             continue;
         }
@@ -176,15 +213,35 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         moving.angularVelocity = body->GetAngularVelocity();
         // Box2D moved the centre by dt * v and the angle by dt * w: undo that for the start pose.
         moving.before.q.Set(body->GetAngle() - dt * moving.angularVelocity);
-        const b2Vec2 centerBefore = moving.center - dt * moving.velocity;
-        moving.before.p = centerBefore - b2Mul(moving.before.q, body->GetLocalCenter());
+        moving.centerBefore = moving.center - dt * moving.velocity;
+        moving.before.p = moving.centerBefore - b2Mul(moving.before.q, body->GetLocalCenter());
         moving.localCenter = body->GetLocalCenter();
         moving.turn = dt * moving.angularVelocity;
         moving.angleBefore = body->GetAngle() - moving.turn;
         const float pieces = std::ceil(std::abs(moving.turn) / kMaxTurn);
         moving.pieces =
             pieces >= 1.0f ? static_cast<int>(std::min(pieces, static_cast<float>(kMaxPieces))) : 1;
+        const auto bodyIndex = static_cast<std::uint32_t>(m_movingBodies.size());
         m_movingBodies.push_back(moving);
+        for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+        {
+            if (fixture->IsSensor())
+            {
+                continue;
+            }
+            const auto material = static_cast<std::uint32_t>(m_movingMaterials.size());
+            m_movingMaterials.push_back(MaterialOf(*fixture));
+            const b2Filter& filter = fixture->GetFilterData();
+            const b2Shape& shape = *fixture->GetShape();
+            const int children = shape.GetChildCount();
+            for (int child = 0; child < children; ++child)
+            {
+                const float reach = Reach(shape, child, moving.localCenter);
+                m_movingShapes.push_back(MovingShape{&shape, child, bodyIndex, material, filter.categoryBits,
+                                                     filter.maskBits, reach});
+                m_movingBoxes.push_back(SweptBox(moving, shape, child, reach));
+            }
+        }
     }
     if (signature.Value() != m_signature)
     {
@@ -194,6 +251,24 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
     // Moving bodies spread out, pile up and fall out of the world: an item budget keeps the grid's
     // memory a function of their number alone, so a step allocates only when there are more than ever.
     m_movingGrid.Build(m_movingBoxes, Grid::Listing::overlapped, kMovingItemsPerBox);
+}
+
+b2AABB WorldGeometry::SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach)
+{
+    b2AABB box;
+    if (body.turn == 0.0f)
+    {
+        // A pure translation: every pose's box lies between the two ends'.
+        b2AABB after;
+        shape.ComputeAABB(&box, body.before, child);
+        shape.ComputeAABB(&after, body.after, child);
+        box.Combine(after);
+    }
+    else
+    {
+        box = PathBox(body.centerBefore, body.center, reach);
+    }
+    return Grown(box, MovingSlop(box));
 }
 
 void WorldGeometry::BuildStatic(b2World& world)
@@ -293,7 +368,46 @@ void WorldGeometry::BuildStatic(b2World& world)
             }
         }
     }
-    m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood);
+    m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood, 0, &PrimitiveTouches, this);
+}
+
+bool WorldGeometry::PrimitiveTouches(const void* context, std::uint32_t index, const b2AABB& region)
+{
+    const auto& geometry = *static_cast<const WorldGeometry*>(context);
+    const Primitive& primitive = geometry.m_primitives[index];
+    // The region's centre and half extent, grown a little so that rounding never drops a primitive that
+    // touches it.
+    const b2Vec2 center = region.GetCenter();
+    const float slop = MovingSlop(region);
+    const b2Vec2 half = region.GetExtents() + b2Vec2(slop, slop);
+    // How far the region reaches along unit `axis` from its centre.
+    auto reach = [&](b2Vec2 axis) { return std::abs(axis.x) * half.x + std::abs(axis.y) * half.y; };
+    switch (primitive.kind)
+    {
+    case Kind::segment:
+        // The region overlaps the segment's box (it lies in it); the segment's line is the other axis.
+        return std::abs(b2Dot(primitive.normal, center - primitive.a)) <= reach(primitive.normal);
+    case Kind::circle:
+    {
+        const b2Vec2 nearest = b2Clamp(primitive.a, center - half, center + half);
+        return b2DistanceSquared(nearest, primitive.a) <= primitive.scalar * primitive.scalar;
+    }
+    case Kind::polygon:
+    {
+        // Separated when the region lies wholly in front of one edge (the box's own axes overlap).
+        const b2Vec2* vertices = geometry.m_polygonVertices.data() + primitive.first;
+        const b2Vec2* normals = geometry.m_polygonNormals.data() + primitive.first;
+        for (int i = 0; i < primitive.count; ++i)
+        {
+            if (b2Dot(normals[i], center - vertices[i]) > reach(normals[i]))
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+    }
+    return true;
 }
 
 // The distances from one point to the static primitives near it: the clearance's part of a sweep, and a

@@ -11,12 +11,14 @@
 // either): call Invalidate() after doing that.
 //
 // Moving geometry (dynamic and kinematic bodies, awake or asleep) is gathered during the same walk into
-// a per-step list and its own grid, keyed by each child's broad-phase box, which Box2D sets to cover the
-// last step's motion. Moving shapes are tested in the body's own frame: the particle's start is taken
-// into the body's frame at the start of the step (reconstructed as position - velocity * dt, which is
-// how Box2D integrated it) and its end into the frame at the end, so a body sweeping into a resting
-// particle meets it like a particle flying into a resting body, and a touch puts the particle on the
-// body's surface where the body is now: carried along or pushed away, never left inside.
+// a per-step list and its own grid, keyed by the box each child swept during the step (tighter than
+// Box2D's fattened broad-phase box): for a body that did not turn, its boxes at the start and the end of
+// the step; for one that did, the box of the capsule its centre's path traces at the child's reach. Moving
+// shapes are tested in the body's own frame: the particle's start is taken into the body's frame at the start
+// of the step (reconstructed as position - velocity * dt, which is how Box2D integrated it) and its end into
+// the frame at the end, so a body sweeping into a resting particle meets it like a particle flying into a
+// resting body, and a touch puts the particle on the body's surface where the body is now: carried along or
+// pushed away, never left inside.
 //
 // Threading: Scan runs on one thread; SweepStatic and SweepMoving are const and run from several.
 // Allocation: none once the vectors have grown to the world's size.
@@ -25,7 +27,9 @@
 #include "particles/grid.h"
 #include "particles/sweep.h"
 
+#include <algorithm>
 #include <box2d/b2_math.h>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -86,6 +90,19 @@ inline bool BoxesOverlap(const b2AABB& a, const b2AABB& b)
 {
     return (a.upperBound.x >= b.lowerBound.x) & (a.upperBound.y >= b.lowerBound.y) &
            (a.lowerBound.x <= b.upperBound.x) & (a.lowerBound.y <= b.upperBound.y);
+}
+
+/// What a bound on moving geometry is grown by (m) so that rounding in the body-frame sweeps, whose
+/// coordinates are up to `magnitude` (m) in size, never lets the bound reject a touch the sweep would
+/// find: 1 mm plus a millionth of the magnitude (float rounding is 6e-8 of it per operation).
+inline float MovingSlop(float magnitude)
+{
+    return 1.0e-3f + 1.0e-6f * magnitude;
+}
+inline float MovingSlop(const b2AABB& box)
+{
+    return MovingSlop(std::max(std::max(std::abs(box.lowerBound.x), std::abs(box.lowerBound.y)),
+                               std::max(std::abs(box.upperBound.x), std::abs(box.upperBound.y))));
 }
 
 class WorldGeometry
@@ -168,7 +185,8 @@ private:
     struct MovingBody
     {
         b2Transform before, after;
-        b2Vec2 center; ///< world centre of mass at the end of the step
+        b2Vec2 centerBefore; ///< world centre of mass at the start of the step
+        b2Vec2 center;       ///< world centre of mass at the end of the step
         b2Vec2 velocity;
         float angularVelocity;
         b2Vec2 localCenter; ///< centre of mass in the body's frame
@@ -187,9 +205,19 @@ private:
         std::uint32_t body;
         std::uint32_t material;
         std::uint16_t categoryBits, maskBits;
+        /// How far (m) the shape reaches from the body's centre of mass, in any pose: during the step it
+        /// stays within this of the centre, which moves in a straight line.
+        float reach;
     };
 
+    /// Whether a disc of radius `r` moving in a straight line from `start` to `end` during the step can
+    /// meet a shape of `body` that reaches `reach` from its centre (false only when it cannot).
+    static bool MayMeet(const MovingBody& body, float reach, b2Vec2 start, b2Vec2 end, float r);
+    /// The box the child covers during the step (see the file comment), grown by a little for rounding.
+    static b2AABB SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach);
     void BuildStatic(b2World& world);
+    /// Grid::Touches for the static primitives (`context`: this).
+    static bool PrimitiveTouches(const void* context, std::uint32_t index, const b2AABB& region);
     class Nearest;
 
     std::uint64_t m_signature = 0;

@@ -304,6 +304,91 @@ TEST(Grid, ANeighbourhoodCellListsEverythingWithinACellOfItsPoints)
 namespace
 {
 
+// Long diagonal segments (ramps) whose boxes are mostly empty: listed by their boxes, every cell of those
+// boxes would list them.
+struct Diagonals
+{
+    std::vector<std::pair<b2Vec2, b2Vec2>> segments;
+    std::vector<b2AABB> boxes;
+
+    Diagonals()
+    {
+        for (int i = 0; i < 6; ++i)
+        {
+            const float x = 8.0f * static_cast<float>(i);
+            const b2Vec2 a(x, i % 2 == 0 ? 0.0f : 6.0f);
+            const b2Vec2 b(x + 8.0f, i % 2 == 0 ? 6.0f : 0.0f);
+            segments.emplace_back(a, b);
+            b2AABB box;
+            box.lowerBound = b2Min(a, b);
+            box.upperBound = b2Max(a, b);
+            boxes.push_back(box);
+        }
+    }
+
+    static float Distance(b2Vec2 a, b2Vec2 b, b2Vec2 point)
+    {
+        const b2Vec2 e = b - a;
+        const float u = std::clamp(b2Dot(point - a, e) / b2Dot(e, e), 0.0f, 1.0f);
+        return b2Distance(point, a + u * e);
+    }
+
+    // Grid::Touches: whether the segment comes into the region (separating axis: its normal).
+    static bool Touches(const void* context, std::uint32_t item, const b2AABB& region)
+    {
+        const auto& [a, b] = static_cast<const Diagonals*>(context)->segments[item];
+        b2Vec2 normal(b.y - a.y, a.x - b.x);
+        normal.Normalize();
+        const b2Vec2 half = region.GetExtents();
+        return std::abs(b2Dot(normal, region.GetCenter() - a)) <=
+               std::abs(normal.x) * half.x + std::abs(normal.y) * half.y;
+    }
+};
+
+} // namespace
+
+// With the shapes' own test, a neighbourhood grid keeps its promise (everything within a cell of a point
+// is in the point's list) with finer cells that list a long diagonal only where it passes.
+TEST(Grid, ExactListingKeepsTheNeighbourhoodAndListsLess)
+{
+    const Diagonals diagonals;
+    Grid byBoxes;
+    byBoxes.Build(diagonals.boxes, Grid::Listing::neighbourhood);
+    Grid exact;
+    exact.Build(diagonals.boxes, Grid::Listing::neighbourhood, 0, &Diagonals::Touches, &diagonals);
+    EXPECT_LT(exact.CellSize(), byBoxes.CellSize()) << "finer cells than the boxes' median extent";
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> x(-2.0f, 50.0f);
+    std::uniform_real_distribution<float> y(-2.0f, 8.0f);
+    int missed = 0;
+    std::size_t listedExact = 0;
+    std::size_t listedByBoxes = 0;
+    std::size_t far = 0;
+    for (int i = 0; i < 5000; ++i)
+    {
+        const b2Vec2 point(x(random), y(random));
+        const std::span<const std::uint32_t> around = exact.Around(point);
+        const std::set<std::uint32_t> items(around.begin(), around.end());
+        listedExact += around.size();
+        listedByBoxes += byBoxes.Around(point).size();
+        for (std::uint32_t k = 0; k < diagonals.segments.size(); ++k)
+        {
+            const auto& [a, b] = diagonals.segments[k];
+            const float distance = Diagonals::Distance(a, b, point);
+            missed += distance <= exact.CellSize() && items.count(k) == 0 ? 1 : 0;
+            // (A point outside the grid's bounds gets the nearest cell's list.)
+            const bool inBounds = point.x >= 0.0f && point.x <= 48.0f && point.y >= 0.0f && point.y <= 6.0f;
+            far += inBounds && distance > 3.0f * exact.CellSize() && items.count(k) > 0 ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(missed, 0) << "every segment within a cell of the point is listed";
+    EXPECT_EQ(far, 0u) << "no segment more than three cells away is listed";
+    EXPECT_LT(4 * listedExact, listedByBoxes) << "a quarter of the entries a point's list has by boxes";
+}
+
+namespace
+{
+
 // Two static chains of 0.5 m segments, along y = 0 and y = 4, from x = -10 to 10.
 struct TwoChains
 {
