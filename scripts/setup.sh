@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config
   libbox2d-dev nlohmann-json3-dev libcli11-dev libcairo2-dev fonts-dejavu-core libglfw3-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev ffmpeg clang libclang-rt-14-dev libsdl2-dev
-  xvfb xauth libgl1-mesa-dri libglx-mesa0)
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 time)
 
 missing=()
 for package in "${packages[@]}"; do

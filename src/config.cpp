@@ -1,9 +1,11 @@
 #include "contactfx/config.h"
 
+#include "contactfx/config_fields.h"
+
+#include <charconv>
 #include <cmath>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <utility>
 
 namespace cfx
@@ -36,6 +38,21 @@ ParticleTypeId EffectsConfig::FindParticleType(std::string_view wanted) const
 namespace
 {
 
+// Every field is checked against its row of the field tables (contactfx/config_fields.h): numbers against
+// their ranges, enums against their names, names against the config. docs/effects-config.md shows the same
+// rows, and a test keeps the two in step.
+
+std::string FormatNumber(float value)
+{
+    if (std::isnan(value))
+    {
+        return "NaN";
+    }
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
 // Collects diagnostics with paths built from a prefix.
 class Checker
 {
@@ -47,36 +64,29 @@ public:
         m_out.push_back(Diagnostic{std::string(m_file), path, message});
     }
 
-    // A finite number in [low, high]; the bounds' words say how the range reads.
-    void Number(const std::string& path, float value, float low, float high, const char* expected)
+    // A finite number within `range`.
+    void Number(const std::string& path, float value, const FieldRange& range)
     {
-        if (!std::isfinite(value) || value < low || value > high)
+        if (range.Contains(value))
         {
-            std::ostringstream text;
-            text << "expected " << expected << ", found ";
-            if (std::isnan(value))
-            {
-                text << "NaN";
-            }
-            else
-            {
-                text << value;
-            }
-            Fail(path, text.str());
+            return;
         }
+        const std::string expected =
+            range.minExclusive
+                ? "a number > " + FormatNumber(range.min) + " and <= " + FormatNumber(range.max)
+                : "a number between " + FormatNumber(range.min) + " and " + FormatNumber(range.max);
+        Fail(path, "expected " + expected + ", found " + FormatNumber(value));
     }
-    void NonNegative(const std::string& path, float value)
+    // An integer within `range` (whose bounds are whole numbers).
+    void Integer(const std::string& path, std::uint32_t value, const FieldRange& range)
     {
-        Number(path, value, 0.0f, INFINITY, "a number >= 0");
-    }
-    void Positive(const std::string& path, float value)
-    {
-        Number(path, value, 1e-9f, INFINITY, "a number > 0");
-    }
-    void Unit(const std::string& path, float value) { Number(path, value, 0.0f, 1.0f, "a number in [0, 1]"); }
-    void Finite(const std::string& path, float value)
-    {
-        Number(path, value, -INFINITY, INFINITY, "a finite number");
+        const auto min = static_cast<long long>(range.min);
+        const auto max = static_cast<long long>(range.max);
+        if (value < min || value > max)
+        {
+            Fail(path, "expected a number in [" + std::to_string(min) + ", " + std::to_string(max) +
+                           "], found " + std::to_string(value));
+        }
     }
     void Enum(const std::string& path, int value, int count)
     {
@@ -86,12 +96,12 @@ public:
                            std::to_string(value));
         }
     }
-    void Colour(const std::string& path, const Color& color)
+    void Colour(const std::string& path, const Color& color, const FieldRange& range)
     {
-        Unit(path + ".r", color.r);
-        Unit(path + ".g", color.g);
-        Unit(path + ".b", color.b);
-        Unit(path + ".a", color.a);
+        Number(path + ".r", color.r, range);
+        Number(path + ".g", color.g, range);
+        Number(path + ".b", color.b, range);
+        Number(path + ".a", color.a, range);
     }
 
 private:
@@ -99,98 +109,111 @@ private:
     std::vector<Diagnostic>& m_out;
 };
 
-void CheckParticleType(Checker& check, const std::string& at, const ParticleTypeDef& type)
+void CheckText(Checker& check, const std::string& path, const std::string& text, TextRule rule,
+               const EffectsConfig& config)
 {
-    check.Unit(at + ".lifeBase", type.lifeBase);
-    check.NonNegative(at + ".lifeFromIntensity", type.lifeFromIntensity);
-    check.Positive(at + ".lifetime", type.lifetime);
-    check.Finite(at + ".inheritA", type.inheritA);
-    check.Finite(at + ".inheritB", type.inheritB);
-    check.Finite(at + ".slipFactor", type.slipFactor);
-    check.Finite(at + ".normalSpeed", type.normalSpeed);
-    check.NonNegative(at + ".spread", type.spread);
-    check.Finite(at + ".gravityScale", type.gravityScale);
-    check.NonNegative(at + ".drag", type.drag);
-    check.Positive(at + ".radius", type.radius);
-    check.Unit(at + ".restitution", type.restitution);
-    check.NonNegative(at + ".friction", type.friction);
-    check.Enum(at + ".backend", static_cast<int>(type.backend), 2);
-    check.Positive(at + ".density", type.density);
-    check.Colour(at + ".colorStart", type.colorStart);
-    check.Colour(at + ".colorEnd", type.colorEnd);
-    check.Positive(at + ".sizeStart", type.sizeStart);
-    check.Positive(at + ".sizeEnd", type.sizeEnd);
-    check.NonNegative(at + ".streak", type.streak);
-}
-
-void CheckRule(Checker& check, const std::string& at, const RuleDef& rule, const EffectsConfig& config)
-{
-    if (!config.FindMaterial(rule.materialA).IsValid())
+    switch (rule)
     {
-        check.Fail(at + ".materialA", "unknown material \"" + rule.materialA + "\"");
-    }
-    if (!config.FindMaterial(rule.materialB).IsValid())
-    {
-        check.Fail(at + ".materialB", "unknown material \"" + rule.materialB + "\"");
-    }
-    if (!config.FindParticleType(rule.particleType).IsValid())
-    {
-        check.Fail(at + ".particleType", "unknown particle type \"" + rule.particleType + "\"");
-    }
-    check.Enum(at + ".intensity.speed", static_cast<int>(rule.intensity.speed), 2);
-    check.Enum(at + ".intensity.friction", static_cast<int>(rule.intensity.friction), 5);
-    check.Enum(at + ".intensity.points", static_cast<int>(rule.intensity.points), 2);
-    check.NonNegative(at + ".intensity.impulseWeight", rule.intensity.impulseWeight);
-    check.NonNegative(at + ".threshold", rule.threshold);
-    check.Enum(at + ".emission", static_cast<int>(rule.emission), 2);
-    check.NonNegative(at + ".ratePerIntensity", rule.ratePerIntensity);
-    check.NonNegative(at + ".maxRate", rule.maxRate);
-    check.Enum(at + ".placement", static_cast<int>(rule.placement), 2);
-    check.NonNegative(at + ".scrapeEndDelay", rule.scrapeEndDelay);
-    check.NonNegative(at + ".impactThreshold", rule.impactThreshold);
-    check.NonNegative(at + ".burstPerSpeed", rule.burstPerSpeed);
-    check.NonNegative(at + ".burstMax", rule.burstMax);
-}
-
-// Both bounds finite and, when both are set, a non-empty open interval.
-void CheckRange(Checker& check, const std::string& at, const char* aboveKey,
-                const std::optional<float>& above, const char* belowKey, const std::optional<float>& below)
-{
-    if (above)
-    {
-        check.Finite(at + "." + aboveKey, *above);
-    }
-    if (below)
-    {
-        check.Finite(at + "." + belowKey, *below);
-    }
-    if (above && below && std::isfinite(*above) && std::isfinite(*below) && !(*below > *above))
-    {
-        std::ostringstream text;
-        text << "expected a number > " << aboveKey << " (" << *above << "), found " << *below
-             << " (no value would match)";
-        check.Fail(at + "." + belowKey, text.str());
+    case TextRule::any:
+    case TextRule::name: // unique within its list: checked with the list
+        break;
+    case TextRule::pattern:
+        if (text.empty())
+        {
+            check.Fail(path, "expected a non-empty pattern (\"*\" matches any name)");
+        }
+        break;
+    case TextRule::material:
+        if (!config.FindMaterial(text).IsValid())
+        {
+            check.Fail(path, "unknown material \"" + text + "\"");
+        }
+        break;
+    case TextRule::particleType:
+        if (!config.FindParticleType(text).IsValid())
+        {
+            check.Fail(path, "unknown particle type \"" + text + "\"");
+        }
+        break;
     }
 }
 
-void CheckAssignment(Checker& check, const std::string& at, const MaterialAssignment& rule,
-                     const EffectsConfig& config)
+// The value of the optional number `name` of `value`, or nothing.
+template <typename S>
+std::optional<float> OptionalNamed(const S& value, std::span<const Field<S>> fields, std::string_view name)
 {
-    if (!config.FindMaterial(rule.material).IsValid())
+    for (const Field<S>& field : fields)
     {
-        check.Fail(at + ".material", "unknown material \"" + rule.material + "\"");
+        if (field.name == name)
+        {
+            if (auto member = std::get_if<std::optional<float> S::*>(&field.member))
+            {
+                return value.**member;
+            }
+        }
     }
-    if (rule.bodyName.empty())
+    return std::nullopt;
+}
+
+template <typename S>
+void CheckFields(Checker& check, const std::string& at, const S& value, std::span<const Field<S>> fields,
+                 const EffectsConfig& config)
+{
+    for (const Field<S>& field : fields)
     {
-        check.Fail(at + ".bodyName", "expected a non-empty pattern (\"*\" matches any name)");
+        const std::string path = at + "." + std::string(field.name);
+        std::visit(
+            [&](auto member)
+            {
+                using M = decltype(member);
+                if constexpr (std::is_same_v<M, float S::*>)
+                {
+                    check.Number(path, value.*member, field.range);
+                }
+                else if constexpr (std::is_same_v<M, std::optional<float> S::*>)
+                {
+                    const std::optional<float>& number = value.*member;
+                    if (number)
+                    {
+                        check.Number(path, *number, field.range);
+                    }
+                    // Both bounds set: a non-empty open interval.
+                    const std::optional<float> lower = field.greaterThan.empty()
+                                                           ? std::nullopt
+                                                           : OptionalNamed(value, fields, field.greaterThan);
+                    if (number && lower && std::isfinite(*lower) && std::isfinite(*number) &&
+                        !(*number > *lower))
+                    {
+                        check.Fail(path, "expected a number > " + std::string(field.greaterThan) + " (" +
+                                             FormatNumber(*lower) + "), found " + FormatNumber(*number) +
+                                             " (no value would match)");
+                    }
+                }
+                else if constexpr (std::is_same_v<M, std::string S::*>)
+                {
+                    CheckText(check, path, value.*member, field.text, config);
+                }
+                else if constexpr (std::is_same_v<M, std::uint32_t S::*> ||
+                                   std::is_same_v<M, std::uint16_t S::*>)
+                {
+                    check.Integer(path, value.*member, field.range);
+                }
+                else if constexpr (std::is_same_v<M, Color S::*>)
+                {
+                    check.Colour(path, value.*member, field.range);
+                }
+                else if constexpr (std::is_same_v<M, ChoiceMember<S>>)
+                {
+                    check.Enum(path, member.get(value), static_cast<int>(field.choices.size()));
+                }
+                else if constexpr (std::is_same_v<M, IntensityModel S::*>)
+                {
+                    CheckFields(check, path, value.*member, IntensityFields(), config);
+                }
+                // bool: any value is valid
+            },
+            field.member);
     }
-    if (rule.fixtureName.empty())
-    {
-        check.Fail(at + ".fixtureName", "expected a non-empty pattern (\"*\" matches any name)");
-    }
-    check.Enum(at + ".bodyType", static_cast<int>(rule.bodyType), 4);
-    CheckRange(check, at, "frictionAbove", rule.frictionAbove, "frictionBelow", rule.frictionBelow);
-    CheckRange(check, at, "massAbove", rule.massAbove, "massBelow", rule.massBelow);
 }
 
 } // namespace
@@ -236,7 +259,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         {
             check.Fail(at + ".name", "duplicate particle type \"" + type.name + "\"");
         }
-        CheckParticleType(check, at, type);
+        CheckFields(check, at, type, ParticleTypeFields(), config);
     }
 
     if (config.rules.size() >= RuleId::kNone)
@@ -248,7 +271,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     {
         const std::string at = "rules[" + std::to_string(i) + "]";
         const RuleDef& rule = config.rules[i];
-        CheckRule(check, at, rule, config);
+        CheckFields(check, at, rule, RuleFields(), config);
         std::string_view a = rule.materialA;
         std::string_view b = rule.materialB;
         if (b < a)
@@ -263,20 +286,11 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
 
     for (std::size_t i = 0; i < config.assignments.size(); ++i)
     {
-        CheckAssignment(check, "assignments[" + std::to_string(i) + "]", config.assignments[i], config);
+        CheckFields(check, "assignments[" + std::to_string(i) + "]", config.assignments[i],
+                    AssignmentFields(), config);
     }
 
-    if (config.budget.capacity < 1 || config.budget.capacity > 4000000)
-    {
-        check.Fail("budget.capacity",
-                   "expected a number in [1, 4000000], found " + std::to_string(config.budget.capacity));
-    }
-    check.Enum("budget.recycle", static_cast<int>(config.budget.recycle), 2);
-    if (config.budget.contacts > 1000000)
-    {
-        check.Fail("budget.contacts",
-                   "expected a number in [0, 1000000], found " + std::to_string(config.budget.contacts));
-    }
+    CheckFields(check, "budget", config.budget, BudgetFields(), config);
     return out;
 }
 

@@ -245,8 +245,9 @@ EffectEvent ContactTracker::EndScrapeWith(TrackedPair& pair, ScrapeEnd reason, c
     event.rule = pair.rule;
     event.fixtureA = fixtureA;
     event.fixtureB = fixtureB;
-    event.materialA = m_materials.Get(fixtureA);
-    event.materialB = m_materials.Get(fixtureB);
+    // The fixtures last reported may have been destroyed since: their recorded materials, unread.
+    event.materialA = m_materials.Recorded(fixtureA);
+    event.materialB = m_materials.Recorded(fixtureB);
     event.id = pair.scrapeId;
     event.step = m_step;
     event.point = pair.scrapePoint;

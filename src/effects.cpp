@@ -1,13 +1,18 @@
 #include "contactfx/effects.h"
 
 #include "contact_tracker.h"
+#include "contactfx/error.h"
 #include "effects_access.h"
 #include "emitter.h"
 #include "fixture_materials.h"
 
+#include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
+#include <cmath>
+#include <mutex>
+#include <sstream>
 
 namespace cfx
 {
@@ -36,12 +41,57 @@ RuleTable BuildRuleTable(const EffectsConfig& config)
     return table;
 }
 
-// Forgets fixtures destroyed with their body, then forwards to the application's listener.
+// The worlds that have an Effects object now, so that a second one on the same world is refused (it would
+// take the first one's listeners, and destroying them in the wrong order would leave Box2D calling a
+// destroyed tracker). Effects on different worlds may live on different threads: guarded by a mutex.
+class WorldClaim
+{
+public:
+    explicit WorldClaim(const b2World& world) : m_world(&world)
+    {
+        const std::lock_guard<std::mutex> lock(Mutex());
+        std::vector<const b2World*>& claimed = Claimed();
+        if (std::find(claimed.begin(), claimed.end(), m_world) != claimed.end())
+        {
+            throw InputError("<api>", "world",
+                             "this b2World already has an Effects object: one Effects per world at a time "
+                             "(destroy the old one before creating its replacement)");
+        }
+        claimed.push_back(m_world);
+    }
+    ~WorldClaim()
+    {
+        const std::lock_guard<std::mutex> lock(Mutex());
+        std::vector<const b2World*>& claimed = Claimed();
+        claimed.erase(std::find(claimed.begin(), claimed.end(), m_world));
+    }
+    WorldClaim(const WorldClaim&) = delete;
+    WorldClaim& operator=(const WorldClaim&) = delete;
+
+private:
+    static std::mutex& Mutex()
+    {
+        static std::mutex mutex;
+        return mutex;
+    }
+    static std::vector<const b2World*>& Claimed()
+    {
+        static std::vector<const b2World*> claimed;
+        return claimed;
+    }
+
+    const b2World* m_world;
+};
+
+// Forgets fixtures destroyed with their body, and the bodies of body-backed particles the application
+// destroyed (so the particle system never destroys them again), then forwards to the application's
+// listener.
 class Destruction final : public b2DestructionListener
 {
 public:
-    Destruction(FixtureMaterials& materials, ContactTracker& tracker, b2DestructionListener* application)
-        : m_materials(materials), m_tracker(tracker), forward(application)
+    Destruction(FixtureMaterials& materials, ContactTracker& tracker, ParticleSystem& particles,
+                b2DestructionListener* application)
+        : m_materials(materials), m_tracker(tracker), m_particles(particles), forward(application)
     {
     }
 
@@ -58,6 +108,7 @@ public:
         // Box2D ended the fixture's contacts just before: their scrapes ended by destruction.
         m_tracker.MarkDestroyed(fixture);
         m_materials.Erase(fixture);
+        m_particles.ForgetBody(fixture->GetBody()); // nothing unless it is a particle's body
         if (forward != nullptr)
         {
             forward->SayGoodbye(fixture);
@@ -67,6 +118,7 @@ public:
 private:
     FixtureMaterials& m_materials;
     ContactTracker& m_tracker;
+    ParticleSystem& m_particles;
 
 public:
     b2DestructionListener* forward;
@@ -75,17 +127,20 @@ public:
 } // namespace
 
 // What Effects keeps out of its public header. Members are declared in the order they depend on each
-// other: the tracker reads the materials, the destruction listener edits both.
+// other: the claim on the world comes first (a second Effects throws before anything else), the tracker
+// reads the materials, the destruction listener edits both and the particle system.
 struct Effects::Internals
 {
-    Internals(const RuleTable& rules, const EffectsConfig& config, const EffectsDef& def)
-        : tracker(rules, materials), destruction(materials, tracker, def.destructionListener),
-          emitter(config, def.seed)
+    Internals(b2World& world, const RuleTable& rules, const EffectsConfig& config, const EffectsDef& def,
+              ParticleSystem& particles)
+        : claim(world), tracker(rules, materials),
+          destruction(materials, tracker, particles, def.destructionListener), emitter(config, def.seed)
     {
         tracker.SetForward(def.contactListener);
         tracker.Reserve(config.budget.contacts);
     }
 
+    WorldClaim claim;
     FixtureMaterials materials;
     ContactTracker tracker;
     Destruction destruction;
@@ -95,7 +150,8 @@ struct Effects::Internals
 Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
       m_particles(world, m_config.particleTypes, m_config.budget, def.particles),
-      m_internals(std::make_unique<Internals>(m_rules, m_config, def)), m_eventListener(def.eventListener)
+      m_internals(std::make_unique<Internals>(world, m_rules, m_config, def, m_particles)),
+      m_eventListener(def.eventListener)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});
@@ -147,6 +203,20 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 
 void Effects::Step(float dt)
 {
+    // Checked before anything changes (the particle system checks again, for its own users).
+    if (!(dt > 0.0f) || !std::isfinite(dt))
+    {
+        std::ostringstream found;
+        found << dt;
+        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + found.str());
+    }
+    if (!m_world.GetGravity().IsValid())
+    {
+        std::ostringstream found;
+        found << "(" << m_world.GetGravity().x << ", " << m_world.GetGravity().y << ")";
+        throw InputError("<api>", "gravity",
+                         "expected the world's gravity to be finite, found " + found.str());
+    }
     ContactTracker& tracker = m_internals->tracker;
     tracker.Prune();
     m_events.assign(tracker.EndedScrapes().begin(), tracker.EndedScrapes().end());
@@ -162,6 +232,9 @@ void Effects::Step(float dt)
     m_stats.crushed = m_particles.Counters().crushed;
     m_stats.particleStepsInside = m_particles.Counters().stepsInside;
     m_stats.crossings = m_particles.Counters().crossings;
+    m_stats.nonFinite = m_particles.Counters().nonFinite;
+    m_stats.skippedBodies = m_particles.Counters().skippedBodies;
+    m_stats.staleMaterials = m_internals->materials.Stale();
     if (m_eventListener != nullptr)
     {
         for (const EffectEvent& event : m_events)

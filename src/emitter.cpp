@@ -8,6 +8,7 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
+#include <limits>
 
 namespace cfx::detail
 {
@@ -27,6 +28,34 @@ bool SurfaceIsA(const b2Fixture* fixtureA, const b2Fixture* fixtureB)
         return fixedA;
     }
     return bodyA->GetMass() >= bodyB->GetMass();
+}
+
+// A particle count from a float that may be absurd (a huge rate), infinite or NaN: clamped to [0, limit]
+// (NaN to 0) before it is converted, since converting a float outside int's range is undefined.
+int ClampedCount(float value, int limit)
+{
+    if (!(value >= 1.0f))
+    {
+        return 0;
+    }
+    if (value >= static_cast<float>(limit))
+    {
+        return limit;
+    }
+    return std::min(limit, static_cast<int>(value)); // value < limit <= 2^31: in range
+}
+
+bool Finite(b2Vec2 v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
+// Whether every input of a sample is finite (a body given a NaN or infinite velocity, a NaN friction).
+bool Finite(const ContactSample& sample)
+{
+    return Finite(sample.point) && Finite(sample.normal) && Finite(sample.velocityA) &&
+           Finite(sample.velocityB) && std::isfinite(sample.frictionA) && std::isfinite(sample.frictionB) &&
+           std::isfinite(sample.normalForce);
 }
 
 bool Asleep(const b2Body* body)
@@ -86,6 +115,8 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
     {
         m_pairSteps.resize(tracker.PairSlots());
     }
+    // More particles than the pool holds in one step would only recycle each other.
+    m_spawnBudget = static_cast<int>(std::min<std::uint32_t>(particles.Capacity(), 0x7FFFFFFFu));
     for (int ruleIndex = 0; ruleIndex < tracker.RuleCount(); ++ruleIndex)
     {
         const RuleId ruleId{static_cast<std::uint16_t>(ruleIndex)};
@@ -131,8 +162,13 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
     if (tracked.impactPending)
     {
         tracked.impactPending = false;
-        if (tracked.approachSpeed >= rule.impactThreshold &&
-            (step.impactContact == kNone || tracked.approachSpeed > step.impactSpeed))
+        if (!std::isfinite(tracked.approachSpeed) || !Finite(tracked.approachPoint) ||
+            !Finite(tracked.approachNormal))
+        {
+            context.stats.nonFiniteSamples += 1; // no impact from a body with non-finite state
+        }
+        else if (tracked.approachSpeed >= rule.impactThreshold &&
+                 (step.impactContact == kNone || tracked.approachSpeed > step.impactSpeed))
         {
             step.impactContact = contactIndex;
             step.impactSpeed = tracked.approachSpeed;
@@ -147,7 +183,8 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
     int pointCount = contact->IsEnabled() ? contact->GetManifold()->pointCount : 0;
     for (int i = 0; i < pointCount; ++i)
     {
-        step.impulse += tracked.normalImpulse[i]; // the pressure counts every point, sampled or not
+        // The pressure counts every point, sampled or not (a non-finite impulse: none; its sample goes).
+        step.impulse += std::isfinite(tracked.normalImpulse[i]) ? tracked.normalImpulse[i] : 0.0f;
     }
     if (rule.intensity.points == ManifoldPoints::first)
     {
@@ -165,6 +202,11 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
         sample.sample = SampleAt(contact, manifold.points[i], manifold.normal);
         sample.sample.normalForce = tracked.normalImpulse[i] / context.dt;
         sample.ownIntensity = ComputeIntensity(sample.sample, rule.intensity);
+        if (!Finite(sample.sample) || !std::isfinite(sample.ownIntensity))
+        {
+            context.stats.nonFiniteSamples += 1; // nothing non-finite reaches a particle or an event
+            continue;
+        }
         sample.impulse = tracked.normalImpulse[i];
         sample.contact = contactIndex;
         const auto index = static_cast<std::uint32_t>(m_samples.size());
@@ -186,7 +228,16 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
 {
     const RuleDef& rule = context.rule;
     TrackedPair& pair = context.tracker.Pair(pairSlot);
-    const PairStep& step = m_pairSteps[pairSlot];
+    PairStep& step = m_pairSteps[pairSlot];
+    if (!std::isfinite(step.impulse))
+    {
+        // Finite impulses that add up past the float range: the pair is heard as silent this step.
+        context.stats.nonFiniteSamples += 1;
+        step.impulse = 0.0f;
+        step.sampledImpulse = 0.0f;
+        step.first = kNone;
+        step.impactContact = kNone;
+    }
     if (step.impactContact != kNone)
     {
         Impact(context, context.contacts[step.impactContact], step.impulse);
@@ -229,6 +280,14 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
     {
         intensity = plain / static_cast<float>(samples);
     }
+    if (!std::isfinite(intensity))
+    {
+        // Finite samples whose weighted sum overflowed: the pair is heard as silent this step.
+        context.stats.nonFiniteSamples += static_cast<std::uint64_t>(samples);
+        intensity = 0.0f;
+        loudest = nullptr;
+        step.first = kNone;
+    }
     context.ruleStats.intensityMaxLastStep = std::max(context.ruleStats.intensityMaxLastStep, intensity);
 
     if (rule.emission == EmissionMode::perStep)
@@ -262,8 +321,10 @@ void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& 
     }
     const float rate = std::min(rule.maxRate, rule.ratePerIntensity * (intensity - rule.threshold));
     const float owed = pair.emissionCarry + rate * context.dt;
-    const int count = static_cast<int>(std::floor(owed));
-    pair.emissionCarry = owed - static_cast<float>(count);
+    // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
+    const int count = ClampedCount(owed, std::max(m_spawnBudget, 0));
+    const float carry = owed - static_cast<float>(count);
+    pair.emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)
     {
         return;
@@ -286,8 +347,7 @@ void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& 
         int upTo = count;
         if (sample.next != kNone)
         {
-            upTo = std::min(
-                count, static_cast<int>(std::floor(cumulative / total * static_cast<float>(count) + offset)));
+            upTo = ClampedCount(cumulative / total * static_cast<float>(count) + offset, count);
         }
         const int share = upTo - given;
         given = std::max(given, upTo);
@@ -341,8 +401,8 @@ void Emitter::UpdateScrape(RuleContext& context, TrackedPair& pair, const Sample
     event.rule = pair.rule;
     event.fixtureA = pair.scrapeFixtureA;
     event.fixtureB = pair.scrapeFixtureB;
-    event.materialA = context.tracker.Materials().Get(event.fixtureA);
-    event.materialB = context.tracker.Materials().Get(event.fixtureB);
+    event.materialA = context.tracker.Materials().Recorded(event.fixtureA);
+    event.materialB = context.tracker.Materials().Recorded(event.fixtureB);
     event.step = context.tracker.Step();
     event.id = pair.scrapeId;
     event.point = pair.scrapePoint;
@@ -367,10 +427,15 @@ void Emitter::Impact(RuleContext& context, const TrackedContact& tracked, float 
     const float burst =
         std::min(context.rule.burstMax,
                  context.rule.burstPerSpeed * (tracked.approachSpeed - context.rule.impactThreshold));
-    const int count = static_cast<int>(std::floor(burst));
+    const int count = ClampedCount(burst, std::max(m_spawnBudget, 0));
     if (count > 0)
     {
         const ContactSample sample = SampleAt(tracked.contact, tracked.approachPoint, tracked.approachNormal);
+        if (!Finite(sample))
+        {
+            context.stats.nonFiniteSamples += 1; // a body's velocity went non-finite since it touched
+            return;
+        }
         SpawnParticles(context, tracked, sample, tracked.approachSpeed, count);
     }
 }
@@ -380,18 +445,20 @@ void Emitter::FillContactFields(const RuleContext& context, const TrackedContact
     event.rule = tracked.rule;
     event.fixtureA = context.tracker.RuleFixtureA(tracked);
     event.fixtureB = context.tracker.RuleFixtureB(tracked);
-    event.materialA = context.tracker.Materials().Get(event.fixtureA);
-    event.materialB = context.tracker.Materials().Get(event.fixtureB);
+    event.materialA = context.tracker.Materials().Recorded(event.fixtureA);
+    event.materialB = context.tracker.Materials().Recorded(event.fixtureB);
     event.step = context.tracker.Step();
 }
 
 void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
                              float intensity, int count)
 {
+    count = std::min(count, m_spawnBudget);
     if (count <= 0)
     {
         return;
     }
+    m_spawnBudget -= count;
     const RuleDef& rule = context.rule;
     const ParticleTypeDef& type = context.type;
     const b2Contact* contact = tracked.contact;
@@ -433,6 +500,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     const b2Vec2 baseVelocity = type.inheritA * ruleVelocityA + type.inheritB * ruleVelocityB +
                                 type.slipFactor * slip + type.normalSpeed * start.normal;
     const float life = std::clamp(type.lifeBase + type.lifeFromIntensity * intensity, 0.0f, 1.0f);
+    int spawned = 0;
     for (int n = 0; n < count; ++n)
     {
         ParticleSpawn spawn;
@@ -442,11 +510,17 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         spawn.velocity.y += m_random.Range(-type.spread, type.spread);
         spawn.life = life;
         spawn.type = context.typeId;
-        context.particles.Spawn(spawn);
+        // Finite inputs times absurd factors (inheritance, spread) can still overflow: no such particle.
+        if (Finite(spawn.position) && Finite(spawn.velocity))
+        {
+            context.particles.Spawn(spawn);
+            ++spawned;
+        }
     }
-    context.ruleStats.spawned += static_cast<std::uint64_t>(count);
-    context.ruleStats.spawnedLastStep += static_cast<std::uint32_t>(count);
-    context.stats.spawnedByType[context.typeId.index] += static_cast<std::uint64_t>(count);
+    context.stats.nonFiniteSamples += static_cast<std::uint64_t>(count - spawned);
+    context.ruleStats.spawned += static_cast<std::uint64_t>(spawned);
+    context.ruleStats.spawnedLastStep += static_cast<std::uint32_t>(spawned);
+    context.stats.spawnedByType[context.typeId.index] += static_cast<std::uint64_t>(spawned);
 }
 
 } // namespace cfx::detail

@@ -24,6 +24,11 @@
 // touching) follow the pair too (events.h). When no start point outside every solid exists near a
 // sample (piles, crevices), its particles are not spawned and are counted as rejected.
 //
+// Bounds: one Emit spawns at most the pool's capacity (more would only recycle each other; rates and
+// bursts are clamped before any float becomes an int), and a manifold point with non-finite inputs (a body
+// with a NaN or infinite velocity, a NaN friction or impulse) is skipped and counted
+// (EffectsStats::nonFiniteSamples): nothing non-finite reaches a particle, an intensity or an event.
+//
 // Determinism: one seeded generator drawn in a fixed order: rules, pairs in the order of their first
 // contact in tracking order, samples, particles. Allocation: the scratch arrays only grow, so a warmed-up
 // world emits without touching the heap.
@@ -99,6 +104,7 @@ private:
     std::vector<PairStep> m_pairSteps;       // by pair slot
     std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
     std::vector<Sample> m_samples;           // this rule's samples
+    int m_spawnBudget = 0;                   // particles this Emit may still spawn (the pool's capacity)
 };
 
 } // namespace cfx::detail

@@ -17,7 +17,7 @@ std::string Diagnostic::ToString() const
     {
         text << ": " << path;
     }
-    text << ": " << message;
+    text << ": " << (warning ? "warning: " : "") << message;
     return text.str();
 }
 

@@ -1,8 +1,9 @@
 // contactfx: the particle pool (see particle_system.h). This file owns the storage, spawning, recycling
-// and the shape of a step: scan the world (serial), advance runs of particles (one per thread), then
-// join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
+// and the shape of a step: scan the world (serial), advance runs of particles (taken by the threads as they
+// free up), then join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
 #include "contactfx/particle_system.h"
 
+#include "contactfx/error.h"
 #include "particle_system_access.h"
 #include "particles/motion.h"
 #include "particles/particle_check.h"
@@ -12,10 +13,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
+#include <cmath>
+#include <sstream>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -47,6 +51,9 @@ struct TypeParams
 constexpr float kRestSpeed = 0.5f;
 
 constexpr unsigned kMaxThreads = 8;
+// Runs a split step is cut into, per thread and at most (see StepJob).
+constexpr std::uint32_t kRunsPerThread = 8;
+constexpr std::uint32_t kMaxRuns = kRunsPerThread * kMaxThreads;
 
 // What scales minParticlesPerThread for a step without collision. Such a step costs about a sixth as much
 // per particle (0.020 against 0.12 ms at 10,000 particles on one thread); measured, a split pays from about
@@ -83,9 +90,12 @@ struct ParticleSystem::Impl
     // Only with checkParticles: each particle's position at the start of the step, and the check.
     std::vector<float> startX, startY;
     particles::ParticleCheck check;
-    // Cold: bodies of body-backed particles (empty when no type is body-backed).
+    // Cold: bodies of body-backed particles (empty when no type is body-backed). bodySet holds the
+    // bodies the system still owns: a body the application destroyed (ForgetBody) leaves it at once,
+    // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
     std::vector<b2Body*> body;
     detail::PointerMap bodySet;
+    std::uint32_t forgotten = 0; // bodies forgotten since the last DropForgotten
     std::uint32_t head = 0;
 
     particles::WorldGeometry geometry;
@@ -121,10 +131,43 @@ struct ParticleSystem::Impl
     {
         if (anyBodyBacked && body[slot] != nullptr)
         {
-            bodySet.Erase(body[slot]);
-            world.DestroyBody(body[slot]);
+            // A body the application destroyed (ForgetBody) is no longer ours: never destroyed twice.
+            if (bodySet.Erase(body[slot]))
+            {
+                world.DestroyBody(body[slot]);
+            }
             body[slot] = nullptr;
         }
+    }
+
+    // Removes the particles whose bodies the application destroyed (ForgetBody), keeping the others in
+    // order; returns the new count. Runs before anything creates a body, so a forgotten body's address
+    // cannot have been given to a new particle yet: a live slot's body missing from bodySet is forgotten.
+    std::uint32_t DropForgotten(std::uint32_t count, std::uint32_t capacity)
+    {
+        if (forgotten == 0)
+        {
+            return count;
+        }
+        forgotten = 0;
+        candidatesValid = false;
+        const particles::PoolArrays pool = Arrays(capacity);
+        std::uint32_t kept = 0;
+        for (std::uint32_t i = 0; i < count; ++i)
+        {
+            const std::uint32_t slot = pool.Slot(i);
+            if (body[slot] != nullptr && bodySet.Find(body[slot]) == nullptr)
+            {
+                body[slot] = nullptr;
+                continue;
+            }
+            if (kept != i)
+            {
+                particles::MoveParticles(pool, i, kept, 1);
+            }
+            ++kept;
+        }
+        return kept;
     }
 
     b2Body* CreateBody(const TypeParams& params, b2Vec2 position, b2Vec2 velocity)
@@ -228,6 +271,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
 
 ParticleSystem::~ParticleSystem()
 {
+    m_count = m_impl->DropForgotten(m_count, m_capacity);
     for (std::uint32_t i = 0; i < m_count; ++i)
     {
         m_impl->ReleaseBody(View().Slot(i));
@@ -240,7 +284,13 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     {
         return;
     }
+    if (!particles::Sane(spawn.position) || !particles::Sane(spawn.velocity))
+    {
+        ++m_counters.nonFinite; // never stored: nothing not finite reaches a step, or Box2D
+        return;
+    }
     Impl& impl = *m_impl;
+    m_count = impl.DropForgotten(m_count, m_capacity);
     std::uint32_t slot;
     if (m_count < m_capacity)
     {
@@ -285,7 +335,28 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
 
 void ParticleSystem::Step(float dt, b2Vec2 gravity)
 {
+    if (!(dt > 0.0f) || !std::isfinite(dt))
+    {
+        std::ostringstream found;
+        found << dt;
+        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + found.str());
+    }
+    if (!gravity.IsValid())
+    {
+        std::ostringstream found;
+        found << "(" << gravity.x << ", " << gravity.y << ")";
+        throw InputError("<api>", "gravity", "expected a finite gravity, found " + found.str());
+    }
     Advance(dt, gravity, true);
+}
+
+void ParticleSystem::ForgetBody(const b2Body* body)
+{
+    Impl& impl = *m_impl;
+    if (impl.anyBodyBacked && body != nullptr && impl.bodySet.Erase(body))
+    {
+        impl.forgotten += 1;
+    }
 }
 
 void detail::ParticleSystemAccess::IntegrateWithoutCollision(ParticleSystem& system, float dt, b2Vec2 gravity)
@@ -296,25 +367,47 @@ void detail::ParticleSystemAccess::IntegrateWithoutCollision(ParticleSystem& sys
 namespace
 {
 
-// One step's split of the particles into runs, shared with the helper threads.
+// One step's split of the particles into runs, shared with the helper threads. The runs are more than the
+// threads, and each thread takes the next run not yet taken until none is left: where particles cost more
+// (the young ones, near the bodies that made them) a thread takes fewer runs, so the threads finish together.
+// Which thread advances a run does not change its result, and the runs are joined, and their dead bodies
+// destroyed, in their order: the same bits for any number of threads and any timing.
 struct StepJob
 {
+    /// What one run left.
+    struct Run
+    {
+        std::uint32_t kept;
+        std::uint32_t owner;     ///< the part (thread) that advanced it
+        std::uint32_t deadBegin; ///< its dead bodies: [deadBegin, deadEnd) of its owner's list
+        std::uint32_t deadEnd;
+    };
+
     particles::PoolArrays pool;
     const particles::TypeStep* steps;
     const particles::WorldGeometry* geometry;
     std::vector<b2Body*>* dead;
     float dt;
     particles::StepTrust trust;
-    std::array<std::uint32_t, kMaxThreads + 1> begin;
-    std::array<std::uint32_t, kMaxThreads> kept;
+    std::uint32_t runCount;
+    std::array<std::uint32_t, kMaxRuns + 1> begin;
+    std::array<Run, kMaxRuns> runs;
     std::array<particles::StepCounts, kMaxThreads> counts;
+    std::atomic<std::uint32_t> next{0};
 
-    static void Run(void* context, unsigned part)
+    static void Advance(void* context, unsigned part)
     {
         auto& job = *static_cast<StepJob*>(context);
-        job.kept[part] =
-            particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust, job.begin[part],
-                                    job.begin[part + 1], job.dead[part], job.counts[part]);
+        std::vector<b2Body*>& dead = job.dead[part];
+        for (std::uint32_t run = job.next.fetch_add(1, std::memory_order_relaxed); run < job.runCount;
+             run = job.next.fetch_add(1, std::memory_order_relaxed))
+        {
+            const auto deadBegin = static_cast<std::uint32_t>(dead.size());
+            const std::uint32_t kept =
+                particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust, job.begin[run],
+                                        job.begin[run + 1], dead, job.counts[part]);
+            job.runs[run] = Run{kept, part, deadBegin, static_cast<std::uint32_t>(dead.size())};
+        }
     }
 };
 
@@ -323,6 +416,7 @@ struct StepJob
 void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
 {
     Impl& impl = *m_impl;
+    m_count = impl.DropForgotten(m_count, m_capacity);
     impl.candidatesValid = false;
     for (std::size_t t = 0; t < impl.types.size(); ++t)
     {
@@ -350,6 +444,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         impl.lastDt = dt;
         impl.lastGravity = gravity;
         impl.lastBuilds = impl.geometry.StaticBuilds();
+        m_counters.skippedBodies = impl.geometry.SkippedBodies();
     }
     else
     {
@@ -358,44 +453,48 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
 
     const std::uint64_t perThread = std::uint64_t{impl.minPerThread} * (scan ? 1u : kPlainPerColliding);
     const auto parts = static_cast<unsigned>(std::clamp<std::uint64_t>(m_count / perThread, 1, impl.threads));
-    StepJob job{impl.Arrays(m_capacity),
-                impl.steps.data(),
-                scan ? &impl.geometry : nullptr,
-                impl.dead.data(),
-                dt,
-                trust,
-                {},
-                {},
-                {}};
-    for (unsigned part = 0; part <= parts; ++part)
+    StepJob job;
+    job.pool = impl.Arrays(m_capacity);
+    job.steps = impl.steps.data();
+    job.geometry = scan ? &impl.geometry : nullptr;
+    job.dead = impl.dead.data();
+    job.dt = dt;
+    job.trust = trust;
+    job.runCount = parts == 1 ? 1u : std::min<std::uint32_t>(kRunsPerThread * parts, kMaxRuns);
+    for (std::uint32_t run = 0; run <= job.runCount; ++run)
     {
-        job.begin[part] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(m_count) * part / parts);
+        job.begin[run] = static_cast<std::uint32_t>(static_cast<std::uint64_t>(m_count) * run / job.runCount);
     }
-    impl.workers.Run(parts, &StepJob::Run, &job);
+    impl.workers.Run(parts, &StepJob::Advance, &job);
     m_threadsUsed = parts;
 
-    std::uint32_t total = job.kept[0];
-    for (unsigned part = 1; part < parts; ++part)
+    std::uint32_t total = 0;
+    for (std::uint32_t run = 0; run < job.runCount; ++run)
     {
-        if (job.begin[part] != total && job.kept[part] > 0)
+        const StepJob::Run& done = job.runs[run];
+        if (job.begin[run] != total && done.kept > 0)
         {
-            particles::MoveParticles(job.pool, job.begin[part], total, job.kept[part]);
+            particles::MoveParticles(job.pool, job.begin[run], total, done.kept);
         }
-        total += job.kept[part];
+        total += done.kept;
+        const std::vector<b2Body*>& dead = impl.dead[done.owner];
+        for (std::uint32_t k = done.deadBegin; k < done.deadEnd; ++k)
+        {
+            if (impl.bodySet.Erase(dead[k])) // never one the application destroyed (ForgetBody)
+            {
+                impl.world.DestroyBody(dead[k]);
+            }
+        }
     }
     for (unsigned part = 0; part < parts; ++part)
     {
-        for (b2Body* dead : impl.dead[part])
-        {
-            impl.bodySet.Erase(dead);
-            impl.world.DestroyBody(dead);
-        }
         impl.dead[part].clear();
     }
     m_count = total;
     for (unsigned part = 0; part < parts; ++part)
     {
         m_counters.crushed += job.counts[part].crushed;
+        m_counters.nonFinite += job.counts[part].nonFinite;
     }
     if (!impl.startX.empty() && scan)
     {

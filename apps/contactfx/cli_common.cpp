@@ -30,6 +30,11 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
     command.add_flag("--check-particles", options.checkParticles,
                      "Check every particle after every step against the world (slow): the stats count "
                      "particle_steps_inside and crossings");
+    command
+        .add_option("--threads", options.threads,
+                    "Threads for the particle step, 1 .. 8, split at any particle count (for testing: the "
+                    "results are the same bits with any number); default: the machine's, split when it pays")
+        ->check(CLI::Range(1u, 8u));
     AddEffectsOptions(command, options,
                       demo ? "Effects config JSON (overrides --preset); the tutorial scene's fixtures name "
                              "steel, rubber, concrete and dirt"

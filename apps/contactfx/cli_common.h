@@ -29,6 +29,7 @@ struct RunOptions
     std::string stats;           ///< stats file; empty: none
     std::string events;          ///< events file (JSON Lines); empty: none
     bool checkParticles = false; ///< ParticleSystemOptions::checkParticles
+    unsigned threads = 0;        ///< --threads: 0 (default) the machine's; N forces N threads per step
 };
 
 /// Adds --seconds, --hz, --seed, --stats, --preset and --effects to `command`; `demo` (a command on the

@@ -22,6 +22,7 @@
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <string>
 
 namespace
@@ -38,6 +39,9 @@ constexpr const char* kFooter = R"(Examples:
 
 int main(int argc, char** argv)
 {
+    // A file size limit (ulimit -f) makes writes fail with EFBIG, reported naming the file, instead of
+    // killing contactfx (and ffmpeg, which inherits this) with SIGXFSZ halfway through a file.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"contactfx: physically driven particle effects from Box2D contacts", "contactfx"};
     app.set_version_flag("--version", std::string("contactfx ") + cfx::kVersion,
                          "Print the version and exit");

@@ -2,7 +2,6 @@
 
 #include "contactfx/effects.h"
 #include "contactfx/error.h"
-#include "contactfx/scene/text_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -18,20 +17,28 @@ void AddPlotOption(CLI::App& command, std::string& file)
         "Write a PNG plot of intensity and particles emitted per rule over time, thresholds marked");
 }
 
-PlotWriter::PlotWriter(std::string file, const Effects& effects) : m_file(std::move(file))
+void CheckPlotFile(const std::string& file)
 {
-    if (m_file.empty())
+    if (file.empty())
     {
         return;
     }
-    std::string extension = std::filesystem::path(m_file).extension().string();
+    std::string extension = std::filesystem::path(file).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".png")
     {
-        throw InputError("<command line>", "--plot", "expected a .png file, found \"" + m_file + "\"");
+        throw InputError("<command line>", "--plot", "expected a .png file, found \"" + file + "\"");
     }
-    m_recorder.emplace(effects.Config().rules.size());
+}
+
+PlotWriter::PlotWriter(std::string file, const Effects& effects) : m_file(std::move(file))
+{
+    CheckPlotFile(m_file);
+    if (!m_file.empty())
+    {
+        m_recorder.emplace(effects.Config().rules.size());
+    }
 }
 
 void PlotWriter::AfterStep(const Effects& effects, float dt)
@@ -42,12 +49,9 @@ void PlotWriter::AfterStep(const Effects& effects, float dt)
     }
 }
 
-void PlotWriter::Write(const Effects& effects, const std::string& title) const
+std::string PlotWriter::Png(const Effects& effects, const std::string& title) const
 {
-    if (m_recorder)
-    {
-        WriteTextFileAtomically(m_file, render::TuningPlotPng(*m_recorder, effects.Config(), title));
-    }
+    return m_recorder ? render::TuningPlotPng(*m_recorder, effects.Config(), title) : std::string();
 }
 
 } // namespace cfx::cli

@@ -19,6 +19,9 @@ namespace cfx::cli
 /// Adds --plot FILE.png to `command`, storing the file name in `file`.
 void AddPlotOption(CLI::App& command, std::string& file);
 
+/// Throws InputError naming --plot when `file` is neither empty nor a .png.
+void CheckPlotFile(const std::string& file);
+
 /// Records a run for its plot when a plot file was asked for; does nothing otherwise.
 class PlotWriter
 {
@@ -27,8 +30,9 @@ public:
     PlotWriter(std::string file, const Effects& effects);
     /// After each step of `effects` (dt in seconds).
     void AfterStep(const Effects& effects, float dt);
-    /// Writes the plot atomically, headed by `title`.
-    void Write(const Effects& effects, const std::string& title) const;
+    /// The plot as PNG bytes, headed by `title`; empty when no plot was asked for. The command writes
+    /// it with its other outputs (outputs.h).
+    std::string Png(const Effects& effects, const std::string& title) const;
 
 private:
     std::string m_file;

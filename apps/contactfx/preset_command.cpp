@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
+#include "outputs.h"
 
 #include <iostream>
 #include <memory>
@@ -37,7 +38,13 @@ void RegisterPresetCommand(CLI::App& app, int& result)
                     }
                     else
                     {
-                        SaveEffectsFile(config, options->out);
+                        // Checked and written like every output (outputs.h): never over a device, a
+                        // read-only file or a directory.
+                        OutputFiles outputs;
+                        const OutputFiles::Handle out = outputs.Add("--out", options->out);
+                        outputs.Prepare();
+                        outputs.Write(out, SaveEffectsString(config));
+                        outputs.Commit();
                     }
                     return kExitOk;
                 });

@@ -2,15 +2,17 @@
 //
 // Frame k shows the simulation at time k / fps (after round(k / fps * hz) steps), so the same flags
 // give the same pixels, and a single PNG at --time T is the frame a video would show at T. Everything
-// that can be checked is checked before the simulation runs: flags, the output's kind and folder, and
-// that ffmpeg is there for a video.
+// that can be checked is checked before the simulation runs: flags, the output's kind, every output
+// file (outputs.h: folder, kind of file, not an input), and that ffmpeg and ffprobe are there for a
+// video. All outputs (the picture or every frame of a sequence, and --stats) are written together at
+// the end, or none are.
 #include "render_command.h"
 
 #include "cli_common.h"
 #include "contactfx/error.h"
 #include "contactfx/render/frame.h"
 #include "contactfx/render/frame_output.h"
-#include "contactfx/scene/text_file.h"
+#include "outputs.h"
 #include "progress.h"
 #include "scenario.h"
 
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace cfx::cli
 {
@@ -93,16 +96,16 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
                "an .mp4 needs an even width and height, found " + std::to_string(options.width) + "x" +
                    std::to_string(options.height));
     }
-    const std::filesystem::path folder = std::filesystem::path(options.out).parent_path();
-    std::error_code error;
-    if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+    if (kind == render::OutputKind::mp4 || kind == render::OutputKind::gif)
     {
-        Refuse("--out", "folder \"" + folder.string() + "\" does not exist");
-    }
-    if ((kind == render::OutputKind::mp4 || kind == render::OutputKind::gif) &&
-        render::FindProgram("ffmpeg").empty())
-    {
-        throw std::runtime_error("ffmpeg not found: install ffmpeg to write .mp4/.gif");
+        if (render::FindProgram("ffmpeg").empty())
+        {
+            throw std::runtime_error("ffmpeg not found: install ffmpeg to write .mp4/.gif");
+        }
+        if (render::FindProgram("ffprobe").empty())
+        {
+            throw std::runtime_error("ffprobe not found: install ffmpeg (with ffprobe) to write .mp4/.gif");
+        }
     }
     return kind;
 }
@@ -120,6 +123,35 @@ int Render(RenderOptions options)
     const render::OutputKind kind = CheckRenderOptions(options);
     const Scenario scenario = SelectScenario(options.run);
     const SimulationDef& def = scenario.def;
+
+    const bool single = kind == render::OutputKind::png;
+    const bool video = kind == render::OutputKind::mp4 || kind == render::OutputKind::gif;
+    const double firstTime = single ? options.time.value_or(options.run.seconds) : 0.0;
+    const auto frames =
+        single ? 1LL : std::max(1LL, static_cast<long long>(std::llround(options.run.seconds * options.fps)));
+
+    // Every file is checked before anything is simulated, and all are written at the end or none.
+    OutputFiles outputs;
+    AddScenarioInputs(outputs, options.run, scenario);
+    std::vector<OutputFiles::Handle> pictures; // one per PNG frame; one video
+    if (kind == render::OutputKind::pngSequence)
+    {
+        for (long long k = 0; k < frames; ++k)
+        {
+            pictures.push_back(outputs.Add("--out", render::SequenceFile(options.out, k)));
+        }
+    }
+    else
+    {
+        pictures.push_back(outputs.Add("--out", options.out));
+    }
+    std::optional<OutputFiles::Handle> stats;
+    if (!options.run.stats.empty())
+    {
+        stats = outputs.Add("--stats", options.run.stats);
+    }
+    outputs.Prepare();
+
     Simulation simulation(def);
 
     const b2Body* followed = nullptr;
@@ -144,17 +176,17 @@ int Render(RenderOptions options)
         render::FitWorld(camera, *simulation.GetScene().world);
     }
 
-    const bool single = kind == render::OutputKind::png;
-    const double firstTime = single ? options.time.value_or(options.run.seconds) : 0.0;
-    const auto frames =
-        single ? 1LL : std::max(1LL, static_cast<long long>(std::llround(options.run.seconds * options.fps)));
-
     render::CairoRenderer renderer(options.width, options.height);
     render::FrameOptions look;
     look.caption = (def.config.name.empty() ? std::string("custom") : def.config.name) + " effects";
     render::FrameScratch scratch;
-    std::unique_ptr<render::FrameSink> sink =
-        render::MakeSink(options.out, kind, options.width, options.height, options.fps);
+    // ffmpeg writes into the video's temporary file; PNG frames go to theirs one by one.
+    std::optional<render::VideoSink> sink;
+    if (video)
+    {
+        sink.emplace(options.out, kind, options.width, options.height, options.fps,
+                     outputs.Temporary(pictures.front()));
+    }
     std::optional<Progress> progress;
     if (frames > 1)
     {
@@ -173,21 +205,34 @@ int Render(RenderOptions options)
             }
         }
         render::RenderFrame(simulation.GetEffects(), simulation.Time(), camera, look, renderer, scratch);
-        sink->Write(renderer);
+        outputs.CheckInterrupted();
+        if (sink)
+        {
+            sink->Write(renderer);
+        }
+        else
+        {
+            outputs.Write(pictures[static_cast<std::size_t>(k)], renderer.EncodePng());
+        }
         if (progress)
         {
             progress->Update(static_cast<std::uint64_t>(k + 1));
         }
     }
-    sink->Finish();
+    if (sink)
+    {
+        sink->Finish(); // ffmpeg succeeded and ffprobe found every frame, or it throws
+    }
     if (progress)
     {
         progress->Finish();
     }
-    if (!options.run.stats.empty())
+    const StateHash runHash = simulation.RunHash();
+    if (stats)
     {
-        WriteTextFileAtomically(options.run.stats, StatsJson(simulation.GetEffects(), def.hz));
+        outputs.Write(*stats, StatsJson(simulation.GetEffects(), def.hz, &runHash));
     }
+    outputs.Commit();
     std::printf("contactfx render: wrote %s (%lld frame%s, %dx%d, %.2f s simulated)\n", options.out.c_str(),
                 frames, frames == 1 ? "" : "s", options.width, options.height,
                 static_cast<double>(simulation.Time()));

@@ -1,7 +1,8 @@
 #include "run_command.h"
 
 #include "cli_common.h"
-#include "contactfx/scene/text_file.h"
+#include "contactfx/error.h"
+#include "outputs.h"
 #include "plot_option.h"
 #include "scenario.h"
 
@@ -9,6 +10,8 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace cfx::cli
 {
@@ -45,36 +48,80 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
                 static_cast<unsigned long long>(stats.spawnedInsideSolid));
 }
 
-// Runs what `options` select for --seconds; `what` heads the summary and the plot.
+// `error` with " (after T s simulated)" added to its messages: where a stream of output failed.
+InputError AfterTime(const InputError& error, double seconds)
+{
+    std::vector<Diagnostic> problems = error.Diagnostics();
+    char when[64];
+    std::snprintf(when, sizeof when, " (after %.2f s simulated)", seconds);
+    for (Diagnostic& problem : problems)
+    {
+        problem.message += when;
+    }
+    return InputError(std::move(problems));
+}
+
+// Runs what `options` select for --seconds; `what` heads the summary and the plot. Every output is
+// checked before the simulation starts and written together at the end, or none is (outputs.h); the
+// events stream to their temporary file as they come, so memory stays flat for any duration.
 int Simulate(const RunOptions& options, const std::string& what, const std::string& plotFile)
 {
     CheckRunOptions(options);
+    CheckPlotFile(plotFile);
     const Scenario scenario = SelectScenario(options);
+    OutputFiles outputs;
+    AddScenarioInputs(outputs, options, scenario);
+    std::optional<OutputFiles::Handle> stats;
+    std::optional<OutputFiles::Handle> events;
+    std::optional<OutputFiles::Handle> plotOutput;
+    if (!options.stats.empty())
+    {
+        stats = outputs.Add("--stats", options.stats);
+    }
+    if (!options.events.empty())
+    {
+        events = outputs.Add("--events", options.events);
+    }
+    if (!plotFile.empty())
+    {
+        plotOutput = outputs.Add("--plot", plotFile);
+    }
+    outputs.Prepare();
+
     Simulation simulation(scenario.def);
     PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));
-    std::string events;
     for (std::uint64_t i = 0; i < steps; ++i)
     {
         scenario.Step(simulation);
         plot.AfterStep(simulation.GetEffects(), simulation.Dt());
-        if (!options.events.empty())
+        outputs.CheckInterrupted();
+        if (events)
         {
-            for (const EffectEvent& event : simulation.GetEffects().Events())
+            try
             {
-                events += EventJsonLine(event, simulation.GetEffects().Config(), options.hz);
+                for (const EffectEvent& event : simulation.GetEffects().Events())
+                {
+                    outputs.Append(*events,
+                                   EventJsonLine(event, simulation.GetEffects().Config(), options.hz));
+                }
+            }
+            catch (const InputError& error)
+            {
+                throw AfterTime(error, static_cast<double>(simulation.Time()));
             }
         }
     }
-    if (!options.stats.empty())
+    const StateHash runHash = simulation.RunHash();
+    if (stats)
     {
-        WriteTextFileAtomically(options.stats, StatsJson(simulation.GetEffects(), scenario.def.hz));
+        outputs.Write(*stats, StatsJson(simulation.GetEffects(), scenario.def.hz, &runHash));
     }
-    if (!options.events.empty())
+    if (plotOutput)
     {
-        WriteTextFileAtomically(options.events, events);
+        outputs.Write(*plotOutput, plot.Png(simulation.GetEffects(), what));
     }
-    plot.Write(simulation.GetEffects(), what);
+    outputs.Commit();
     PrintSummary(simulation, options, what);
     return kExitOk;
 }

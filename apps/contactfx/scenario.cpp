@@ -77,7 +77,23 @@ Scenario SelectScenario(const RunOptions& options)
     scenario.def.seed = options.seed;
     scenario.def.hz = static_cast<float>(options.hz);
     scenario.def.particles.checkParticles = options.checkParticles;
+    if (options.threads > 0)
+    {
+        scenario.def.particles.threads = options.threads; // forced: split whatever the particle count
+        scenario.def.particles.minParticlesPerThread = 1;
+    }
     return scenario;
+}
+
+void AddScenarioInputs(OutputFiles& outputs, const RunOptions& options, const Scenario& scenario)
+{
+    outputs.AddInput(options.scene);
+    outputs.AddInput(options.effects);
+    outputs.AddInput(scenario.def.scene);
+    if (scenario.entry != nullptr && !scenario.entry->effectsFile.empty())
+    {
+        outputs.AddInput(BundledScenesDir() / scenario.entry->effectsFile);
+    }
 }
 
 } // namespace cfx::cli

@@ -5,6 +5,7 @@
 #include "cli_common.h"
 #include "harness/scenes.h"
 #include "harness/simulation.h"
+#include "outputs.h"
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -33,5 +34,9 @@ void AddSceneOptions(CLI::App& command, RunOptions& options, const std::string& 
 /// is not registered (listing the registered names and suggesting the nearest); and what reading the
 /// effects file throws. Loads no scene: Simulation(def) does.
 Scenario SelectScenario(const RunOptions& options);
+
+/// Registers the files `scenario` reads (scene file, effects file; for a registered scene its bundled
+/// files) as inputs of `outputs`, which may then not overwrite them.
+void AddScenarioInputs(OutputFiles& outputs, const RunOptions& options, const Scenario& scenario);
 
 } // namespace cfx::cli

@@ -6,6 +6,9 @@
 // --preset/--effects, so that a scene that validates also runs: its `material` properties must name
 // materials of that config. Files are only read, never written.
 //
+// Warnings (a scene's unknown keys, polygon vertices Box2D drops) are listed but do not fail a file;
+// --strict counts them as errors.
+//
 // Which reader a file gets: --as, else a name ending in `.effects.json` means an effects config, else the
 // content decides (a top-level object with effects keys and none of RUBE's is an effects config).
 #include "validate_command.h"
@@ -39,6 +42,7 @@ struct Options
 {
     std::vector<std::string> files;
     bool json = false;
+    bool strict = false;
     std::string as = "auto";
     RunOptions effects; ///< only --preset and --effects are used
 };
@@ -54,6 +58,7 @@ struct Report
     int fixturesWithMaterial = 0;
     std::optional<EffectsConfig> config; ///< effects configs that loaded
     std::vector<Diagnostic> errors;
+    std::vector<Diagnostic> warnings;
 };
 
 bool EndsWith(const std::string& text, const std::string& suffix)
@@ -107,7 +112,7 @@ Report CheckEffects(const std::string& file, const std::string& text)
 Report CheckScene(const std::string& file, const std::string& text, const EffectsConfig* config)
 {
     Report report(file, FileKind::scene);
-    report.errors = ValidateRubeString(text, file, &report.counts);
+    report.errors = ValidateRubeString(text, file, &report.counts, &report.warnings);
     if (!report.errors.empty() || config == nullptr)
     {
         return report;
@@ -140,8 +145,18 @@ Report Check(const std::string& file, const Options& options, const EffectsConfi
         report.errors = error.Diagnostics();
         return report;
     }
-    return Classify(file, text, options.as) == FileKind::effects ? CheckEffects(file, text)
-                                                                 : CheckScene(file, text, config);
+    Report report = Classify(file, text, options.as) == FileKind::effects ? CheckEffects(file, text)
+                                                                          : CheckScene(file, text, config);
+    if (options.strict)
+    {
+        for (Diagnostic& warning : report.warnings)
+        {
+            warning.warning = false;
+            report.errors.push_back(std::move(warning));
+        }
+        report.warnings.clear();
+    }
+    return report;
 }
 
 void PrintJson(const Report& report)
@@ -156,15 +171,20 @@ void PrintJson(const Report& report)
     line["joints"] = report.counts.joints;
     line["images"] = report.counts.images;
     line["fixtures_with_material"] = report.fixturesWithMaterial;
-    Json errors = Json::array();
-    for (const Diagnostic& problem : report.errors)
+    auto list = [](const std::vector<Diagnostic>& problems)
     {
-        errors.push_back(Json{{"path", problem.path},
-                              {"message", problem.message},
-                              {"line", problem.line},
-                              {"column", problem.column}});
-    }
-    line["errors"] = errors;
+        Json items = Json::array();
+        for (const Diagnostic& problem : problems)
+        {
+            items.push_back(Json{{"path", problem.path},
+                                 {"message", problem.message},
+                                 {"line", problem.line},
+                                 {"column", problem.column}});
+        }
+        return items;
+    };
+    line["errors"] = list(report.errors);
+    line["warnings"] = list(report.warnings);
     std::cout << line.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
 }
 
@@ -175,13 +195,20 @@ std::string Count(std::size_t n, const char* one, const char* many)
 
 void PrintText(const Report& report)
 {
+    for (const Diagnostic& warning : report.warnings)
+    {
+        std::cout << warning.ToString() << '\n';
+    }
+    const std::string warnings =
+        report.warnings.empty() ? "" : " (" + Count(report.warnings.size(), "warning", "warnings") + ")";
     if (!report.errors.empty())
     {
         for (const Diagnostic& problem : report.errors)
         {
             std::cout << problem.ToString() << '\n';
         }
-        std::cout << report.file << ": " << Count(report.errors.size(), "problem", "problems") << '\n';
+        std::cout << report.file << ": " << Count(report.errors.size(), "problem", "problems") << warnings
+                  << '\n';
     }
     else if (report.kind == FileKind::effects)
     {
@@ -198,7 +225,7 @@ void PrintText(const Report& report)
                   << Count(report.counts.fixtures, "fixture", "fixtures") << " ("
                   << report.fixturesWithMaterial << " with a material), "
                   << Count(report.counts.joints, "joint", "joints") << ", "
-                  << Count(report.counts.images, "image", "images") << "\n";
+                  << Count(report.counts.images, "image", "images") << warnings << "\n";
     }
 }
 
@@ -237,7 +264,9 @@ void RegisterValidateCommand(CLI::App& app, int& result)
     command->add_option("files", options->files, "Scene or effects config JSON files")->required();
     command->add_flag("--json", options->json,
                       "One JSON object per file and line: {file, kind, ok, bodies, fixtures, joints, images, "
-                      "fixtures_with_material, errors: [{path, message, line, column}]}");
+                      "fixtures_with_material, errors: [{path, message, line, column}], warnings: [same]}");
+    command->add_flag("--strict", options->strict,
+                      "Count warnings (unknown keys in scenes, polygon vertices Box2D drops) as errors");
     command->add_option("--as", options->as, "How to read the files: auto, scene or effects")
         ->check(CLI::IsMember({"auto", "scene", "effects"}))
         ->capture_default_str();

@@ -79,6 +79,7 @@ void Simulation::Step()
     m_scene.world->Step(m_dt, m_scene.settings.velocityIterations, m_scene.settings.positionIterations);
     const Clock::time_point stepped = Clock::now();
     m_effects->Step(m_dt);
+    m_events.Add(m_effects->Events());
     m_times.worldMs = std::chrono::duration<double, std::milli>(stepped - start).count();
     m_times.effectsMs = std::chrono::duration<double, std::milli>(Clock::now() - stepped).count();
     ++m_steps;
@@ -128,7 +129,14 @@ std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config,
     return line.dump() + "\n";
 }
 
-std::string StatsJson(const Effects& effects, float hz)
+StateHash Simulation::RunHash() const
+{
+    StateHash hash = m_events;
+    hash.Add(m_effects->Particles());
+    return hash;
+}
+
+std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash)
 {
     using Json = nlohmann::ordered_json;
     const EffectsConfig& config = effects.Config();
@@ -162,6 +170,14 @@ std::string StatsJson(const Effects& effects, float hz)
     root["particle_steps_inside"] = stats.particleStepsInside;
     root["crossings"] = stats.crossings;
     root["spawn_rejected"] = stats.spawnRejected;
+    root["non_finite"] = stats.nonFinite;
+    root["skipped_bodies"] = stats.skippedBodies;
+    root["non_finite_samples"] = stats.nonFiniteSamples;
+    root["stale_materials"] = stats.staleMaterials;
+    if (runHash != nullptr)
+    {
+        root["state_hash"] = runHash->Hex();
+    }
     return root.dump(2) + "\n";
 }
 

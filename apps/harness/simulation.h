@@ -11,6 +11,7 @@
 #include "contactfx/scene/rube.h"
 #include "contactfx/scene/scene_materials.h"
 #include "harness/car.h"
+#include "harness/state_hash.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -68,6 +69,9 @@ public:
     Effects& GetEffects() { return *m_effects; }
     const Effects& GetEffects() const { return *m_effects; }
     const std::optional<Car>& GetCar() const { return m_car; }
+    /// The run's hash (state_hash.h): every event reported since the start (or the last ReplaceEffects),
+    /// then the live particles now.
+    StateHash RunHash() const;
 
 private:
     Scene m_scene;
@@ -81,13 +85,15 @@ private:
     float m_dt;
     std::uint64_t m_steps = 0;
     StepTimes m_times;
+    StateHash m_events; // every event so far
 };
 
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
 /// {"contacts_max", "spawned"}}, "live_max", "spawned_inside_solid", "crushed", "particle_steps_inside",
-/// "crossings", "spawn_rejected"}; rule names sorted, every type and
-/// rule present.
-std::string StatsJson(const Effects& effects, float hz);
+/// "crossings", "spawn_rejected", "non_finite", "skipped_bodies", "non_finite_samples", "stale_materials",
+/// "state_hash"}; rule names sorted, every
+/// type and rule present; "state_hash" (Simulation::RunHash, 16 hexadecimal digits) only when given.
+std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash = nullptr);
 
 /// One line of the CLI's events file (JSON Lines, newline included): {"type" (scrape_began,
 /// scrape_changed, scrape_ended, impact), "step", "time" (s simulated when reported), "id", "pair"

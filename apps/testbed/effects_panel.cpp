@@ -1,12 +1,16 @@
 // The live effects editor. Widgets edit a draft; when an edit is finished (a field left, a combo or
 // checkbox changed) and the draft is valid, it replaces the simulation's effects at once. An invalid
 // draft is never applied: its problems are listed, field by field, until they are fixed.
+#include "contactfx/config_fields.h"
 #include "contactfx/scene/effects_json.h"
+#include "field_widgets.h"
 #include "panels.h"
 
+#include <algorithm>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 #include <span>
+#include <variant>
 
 namespace cfx::testbed
 {
@@ -20,27 +24,10 @@ bool Finished()
     return ImGui::IsItemDeactivatedAfterEdit();
 }
 
-bool Float(const char* label, float& value, float speed, float low, float high)
-{
-    ImGui::DragFloat(label, &value, speed, low, high, "%.3f");
-    return Finished();
-}
-
 bool Text(const char* label, std::string& value)
 {
     ImGui::InputText(label, &value);
     return Finished();
-}
-
-template <typename Enum> bool EnumCombo(const char* label, Enum& value, std::span<const char* const> names)
-{
-    int index = static_cast<int>(value);
-    if (ImGui::Combo(label, &index, names.data(), static_cast<int>(names.size())))
-    {
-        value = static_cast<Enum>(index);
-        return true;
-    }
-    return false;
 }
 
 bool NameCombo(const char* label, std::string& value, const std::vector<std::string>& names)
@@ -61,25 +48,142 @@ bool NameCombo(const char* label, std::string& value, const std::vector<std::str
     return changed;
 }
 
-bool ColorField(const char* label, Color& color)
+std::vector<std::string> ParticleTypeNames(const EffectsConfig& draft)
 {
-    ImGui::ColorEdit4(label, &color.r, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_AlphaBar);
+    std::vector<std::string> names;
+    for (const ParticleTypeDef& type : draft.particleTypes)
+    {
+        names.push_back(type.name);
+    }
+    return names;
+}
+
+bool Number(const char* label, float& value, const FieldRange& range, float step)
+{
+    const DragBounds bounds = DragBoundsOf(range, step);
+    ImGui::DragFloat(label, &value, bounds.speed, bounds.low, bounds.high, kNumberFormat);
     return Finished();
 }
 
-bool Bits(const char* label, std::uint16_t& bits)
+// One widget per field of the table, labelled with its name and unit and bounded by its range.
+template <typename S>
+bool EditFields(S& value, std::span<const Field<S>> fields, const EffectsConfig& draft,
+                const char* prefix = "")
 {
-    ImGui::InputScalar(label, ImGuiDataType_U16, &bits, nullptr, nullptr, "%04X",
-                       ImGuiInputTextFlags_CharsHexadecimal);
-    return Finished();
+    bool finished = false;
+    for (const Field<S>& field : fields)
+    {
+        const std::string label = LabelOf(prefix, field.name, field.unit);
+        std::visit(
+            [&](auto member)
+            {
+                using M = decltype(member);
+                if constexpr (std::is_same_v<M, float S::*>)
+                {
+                    finished |= Number(label.c_str(), value.*member, field.range, field.step);
+                }
+                else if constexpr (std::is_same_v<M, std::optional<float> S::*>)
+                {
+                    // A checkbox sets or clears the bound; the number is edited while it is set.
+                    std::optional<float>& bound = value.*member;
+                    bool set = bound.has_value();
+                    if (ImGui::Checkbox(("##set " + label).c_str(), &set))
+                    {
+                        bound = set ? std::optional<float>(std::clamp(0.0f, field.range.min, field.range.max))
+                                    : std::nullopt;
+                        finished = true;
+                    }
+                    ImGui::SameLine();
+                    if (bound)
+                    {
+                        finished |= Number(label.c_str(), *bound, field.range, field.step);
+                    }
+                    else
+                    {
+                        ImGui::TextDisabled("%s: absent", label.c_str());
+                    }
+                }
+                else if constexpr (std::is_same_v<M, bool S::*>)
+                {
+                    finished |= ImGui::Checkbox(label.c_str(), &(value.*member));
+                }
+                else if constexpr (std::is_same_v<M, std::string S::*>)
+                {
+                    if (field.text == TextRule::material)
+                    {
+                        finished |= NameCombo(label.c_str(), value.*member, draft.materials);
+                    }
+                    else if (field.text == TextRule::particleType)
+                    {
+                        finished |= NameCombo(label.c_str(), value.*member, ParticleTypeNames(draft));
+                    }
+                    else
+                    {
+                        finished |= Text(label.c_str(), value.*member);
+                    }
+                }
+                else if constexpr (std::is_same_v<M, std::uint16_t S::*>)
+                {
+                    ImGui::InputScalar(label.c_str(), ImGuiDataType_U16, &(value.*member), nullptr, nullptr,
+                                       "%04X", ImGuiInputTextFlags_CharsHexadecimal);
+                    finished |= Finished();
+                }
+                else if constexpr (std::is_same_v<M, std::uint32_t S::*>)
+                {
+                    int number = static_cast<int>(value.*member);
+                    const int step = static_cast<int>(field.step);
+                    ImGui::InputInt(label.c_str(), &number, step, step * 16);
+                    if (Finished())
+                    {
+                        const int low = static_cast<int>(field.range.min);
+                        const int high = static_cast<int>(field.range.max);
+                        value.*member = static_cast<std::uint32_t>(std::clamp(number, low, high));
+                        finished = true;
+                    }
+                }
+                else if constexpr (std::is_same_v<M, Color S::*>)
+                {
+                    ImGui::ColorEdit4(label.c_str(), &(value.*member).r,
+                                      ImGuiColorEditFlags_Float | ImGuiColorEditFlags_AlphaBar);
+                    finished |= Finished();
+                }
+                else if constexpr (std::is_same_v<M, ChoiceMember<S>>)
+                {
+                    const int index = member.get(value);
+                    const bool known = index >= 0 && static_cast<std::size_t>(index) < field.choices.size();
+                    const std::string shown =
+                        known ? std::string(field.choices[static_cast<std::size_t>(index)])
+                              : std::string("?");
+                    if (ImGui::BeginCombo(label.c_str(), shown.c_str()))
+                    {
+                        for (std::size_t i = 0; i < field.choices.size(); ++i)
+                        {
+                            const std::string name(field.choices[i]);
+                            if (ImGui::Selectable(name.c_str(), static_cast<int>(i) == index))
+                            {
+                                finished |= static_cast<int>(i) != index;
+                                member.set(value, static_cast<int>(i));
+                            }
+                        }
+                        ImGui::EndCombo();
+                    }
+                }
+                else if constexpr (std::is_same_v<M, IntensityModel S::*>)
+                {
+                    ImGui::PushID(label.c_str());
+                    finished |= EditFields(value.*member, IntensityFields(), draft,
+                                           (std::string(field.name) + ".").c_str());
+                    ImGui::PopID();
+                }
+            },
+            field.member);
+        if (ImGui::IsItemHovered() && !field.doc.empty())
+        {
+            ImGui::SetTooltip("%.*s", static_cast<int>(field.doc.size()), field.doc.data());
+        }
+    }
+    return finished;
 }
-
-constexpr const char* kSpeedModes[] = {"full", "tangential"};
-constexpr const char* kFrictionMixes[] = {"product", "sqrt", "min", "max", "mean"};
-constexpr const char* kPoints[] = {"first", "all"};
-constexpr const char* kEmissions[] = {"rate", "perStep"};
-constexpr const char* kPlacements[] = {"surface", "tutorialDrop"};
-constexpr const char* kBackends[] = {"pool", "body"};
 
 std::string Unique(const std::string& stem, std::size_t number, auto&& taken)
 {
@@ -137,45 +241,16 @@ bool MaterialsTab(EffectsConfig& draft)
         });
 }
 
-bool ParticleTypeFields(ParticleTypeDef& type)
-{
-    bool finished = Text("name", type.name);
-    finished |= Float("lifeBase", type.lifeBase, 0.01f, 0.0f, 1.0f);
-    finished |= Float("lifeFromIntensity", type.lifeFromIntensity, 0.01f, 0.0f, 10.0f);
-    finished |= Float("lifetime (s)", type.lifetime, 0.01f, 0.01f, 60.0f);
-    finished |= Float("inheritA", type.inheritA, 0.01f, -5.0f, 5.0f);
-    finished |= Float("inheritB", type.inheritB, 0.01f, -5.0f, 5.0f);
-    finished |= Float("slipFactor", type.slipFactor, 0.01f, -5.0f, 5.0f);
-    finished |= Float("normalSpeed (m/s)", type.normalSpeed, 0.05f, -50.0f, 50.0f);
-    finished |= Float("spread (m/s)", type.spread, 0.05f, 0.0f, 50.0f);
-    finished |= Float("gravityScale", type.gravityScale, 0.01f, -10.0f, 10.0f);
-    finished |= Float("drag (1/s)", type.drag, 0.05f, 0.0f, 100.0f);
-    finished |= ImGui::Checkbox("collide", &type.collide);
-    finished |= Float("radius (m)", type.radius, 0.001f, 0.001f, 1.0f);
-    finished |= Float("restitution", type.restitution, 0.01f, 0.0f, 1.0f);
-    finished |= Float("friction", type.friction, 0.01f, 0.0f, 10.0f);
-    finished |= Bits("categoryBits", type.categoryBits);
-    finished |= Bits("maskBits", type.maskBits);
-    finished |= EnumCombo("backend", type.backend, kBackends);
-    finished |= Float("density (kg/m2)", type.density, 0.05f, 0.01f, 100.0f);
-    finished |= ColorField("colorStart", type.colorStart);
-    finished |= ColorField("colorEnd", type.colorEnd);
-    finished |= Float("sizeStart (m)", type.sizeStart, 0.005f, 0.001f, 10.0f);
-    finished |= Float("sizeEnd (m)", type.sizeEnd, 0.005f, 0.001f, 10.0f);
-    finished |= Float("streak (s)", type.streak, 0.001f, 0.0f, 1.0f);
-    return finished;
-}
-
 bool ParticleTypesTab(EffectsConfig& draft)
 {
     return EditList(
         draft.particleTypes, "Add particle type",
-        [](ParticleTypeDef& type, bool& remove)
+        [&](ParticleTypeDef& type, bool& remove)
         {
             bool finished = false;
             if (ImGui::TreeNode("type", "%s", type.name.c_str()))
             {
-                finished = ParticleTypeFields(type);
+                finished = EditFields(type, ParticleTypeFields(), draft);
                 remove = ImGui::SmallButton("remove this type");
                 ImGui::TreePop();
             }
@@ -192,32 +267,6 @@ bool ParticleTypesTab(EffectsConfig& draft)
         });
 }
 
-bool RuleFields(RuleDef& rule, const EffectsConfig& draft)
-{
-    std::vector<std::string> typeNames;
-    for (const ParticleTypeDef& type : draft.particleTypes)
-    {
-        typeNames.push_back(type.name);
-    }
-    bool finished = NameCombo("materialA", rule.materialA, draft.materials);
-    finished |= NameCombo("materialB", rule.materialB, draft.materials);
-    finished |= NameCombo("particleType", rule.particleType, typeNames);
-    finished |= EnumCombo("speed", rule.intensity.speed, kSpeedModes);
-    finished |= EnumCombo("friction mix", rule.intensity.friction, kFrictionMixes);
-    finished |= EnumCombo("points", rule.intensity.points, kPoints);
-    finished |= Float("impulseWeight (1/N)", rule.intensity.impulseWeight, 0.001f, 0.0f, 10.0f);
-    finished |= Float("threshold", rule.threshold, 0.05f, 0.0f, 1000.0f);
-    finished |= EnumCombo("emission", rule.emission, kEmissions);
-    finished |= Float("ratePerIntensity", rule.ratePerIntensity, 0.5f, 0.0f, 100000.0f);
-    finished |= Float("maxRate (1/s)", rule.maxRate, 1.0f, 0.0f, 1000000.0f);
-    finished |= EnumCombo("placement", rule.placement, kPlacements);
-    finished |= Float("scrapeEndDelay (s)", rule.scrapeEndDelay, 0.01f, 0.0f, 10.0f);
-    finished |= Float("impactThreshold (m/s)", rule.impactThreshold, 0.05f, 0.0f, 100.0f);
-    finished |= Float("burstPerSpeed", rule.burstPerSpeed, 0.1f, 0.0f, 1000.0f);
-    finished |= Float("burstMax", rule.burstMax, 1.0f, 0.0f, 100000.0f);
-    return finished;
-}
-
 bool RulesTab(EffectsConfig& draft)
 {
     bool finished = EditList(
@@ -228,7 +277,7 @@ bool RulesTab(EffectsConfig& draft)
             if (ImGui::TreeNode("rule", "%s + %s -> %s", rule.materialA.c_str(), rule.materialB.c_str(),
                                 rule.particleType.c_str()))
             {
-                edited = RuleFields(rule, draft);
+                edited = EditFields(rule, RuleFields(), draft);
                 remove = ImGui::SmallButton("remove this rule");
                 ImGui::TreePop();
             }
@@ -242,21 +291,30 @@ bool RulesTab(EffectsConfig& draft)
             rule.particleType = draft.particleTypes.empty() ? "" : draft.particleTypes.front().name;
             return rule;
         });
-    int capacity = static_cast<int>(draft.budget.capacity);
-    ImGui::InputInt("budget capacity", &capacity, 256, 4096);
-    if (Finished())
-    {
-        draft.budget.capacity = static_cast<std::uint32_t>(std::max(capacity, 0));
-        finished = true;
-    }
-    int contacts = static_cast<int>(draft.budget.contacts);
-    ImGui::InputInt("budget contacts", &contacts, 64, 1024);
-    if (Finished())
-    {
-        draft.budget.contacts = static_cast<std::uint32_t>(std::max(contacts, 0));
-        finished = true;
-    }
     return finished;
+}
+
+bool AssignmentsTab(EffectsConfig& draft)
+{
+    return EditList(
+        draft.assignments, "Add assignment",
+        [&](MaterialAssignment& assignment, bool& remove)
+        {
+            bool edited = false;
+            if (ImGui::TreeNode("assignment", "%s", assignment.material.c_str()))
+            {
+                edited = EditFields(assignment, AssignmentFields(), draft);
+                remove = ImGui::SmallButton("remove this assignment");
+                ImGui::TreePop();
+            }
+            return edited;
+        },
+        [&]
+        {
+            MaterialAssignment assignment;
+            assignment.material = draft.materials.empty() ? "" : draft.materials.front();
+            return assignment;
+        });
 }
 
 } // namespace
@@ -281,6 +339,16 @@ void EffectsPanel(Session& session, EffectsEditor& editor)
         if (ImGui::BeginTabItem("Rules"))
         {
             finished |= RulesTab(editor.draft);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Assignments"))
+        {
+            finished |= AssignmentsTab(editor.draft);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Budget"))
+        {
+            finished |= EditFields(editor.draft.budget, BudgetFields(), editor.draft);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();

@@ -2,6 +2,7 @@
 #include "scenes/debris_bench.h"
 
 #include "contactfx/presets.h"
+#include "harness/state_hash.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
@@ -57,25 +58,6 @@ void AddBox(b2Body* ground, float x0, float y0, float x1, float y1)
     def.friction = kConcreteFriction;
     ground->CreateFixture(&def);
 }
-
-class Hash
-{
-public:
-    void Add(const void* data, std::size_t size)
-    {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i)
-        {
-            m_value = (m_value ^ bytes[i]) * 0x100000001b3ULL; // FNV-1a
-        }
-    }
-    void Add(float value) { Add(&value, sizeof value); }
-    void Add(std::uint64_t value) { Add(&value, sizeof value); }
-    std::uint64_t Value() const { return m_value; }
-
-private:
-    std::uint64_t m_value = 0xcbf29ce484222325ULL;
-};
 
 // Whether a dynamic body's centre is within `reach` of a point (its box may then overlap a box there).
 class AnyDynamicNear final : public b2QueryCallback
@@ -308,35 +290,19 @@ std::uint32_t DebrisBenchScene::BoxesTouchingBoxes() const
 
 std::uint64_t DebrisBenchScene::StateHash() const
 {
-    Hash hash;
+    cfx::StateHash hash;
     for (const b2Body* box : m_boxes)
     {
-        hash.Add(box->GetPosition().x);
-        hash.Add(box->GetPosition().y);
-        hash.Add(box->GetAngle());
-        hash.Add(box->GetLinearVelocity().x);
-        hash.Add(box->GetLinearVelocity().y);
-        hash.Add(box->GetAngularVelocity());
+        const float state[] = {
+            box->GetPosition().x,       box->GetPosition().y,       box->GetAngle(),
+            box->GetLinearVelocity().x, box->GetLinearVelocity().y, box->GetAngularVelocity()};
+        hash.Add(state, sizeof state);
     }
-    const ParticleView view = m_effects->Particles();
-    hash.Add(std::uint64_t{view.count});
-    for (std::uint32_t i = 0; i < view.count; ++i)
-    {
-        const std::uint32_t slot = view.Slot(i);
-        hash.Add(view.positionX[slot]);
-        hash.Add(view.positionY[slot]);
-        hash.Add(view.velocityX[slot]);
-        hash.Add(view.velocityY[slot]);
-        hash.Add(view.life[slot]);
-        hash.Add(std::uint64_t{view.type[slot]});
-    }
+    hash.Add(m_effects->Particles());
     const EffectsStats& stats = m_effects->Stats();
-    for (const std::uint64_t spawned : stats.spawnedByType)
-    {
-        hash.Add(spawned);
-    }
-    hash.Add(stats.recycled);
-    hash.Add(m_dropped);
+    hash.Add(stats.spawnedByType.data(), stats.spawnedByType.size() * sizeof(std::uint64_t));
+    hash.Add(&stats.recycled, sizeof stats.recycled);
+    hash.Add(&m_dropped, sizeof m_dropped);
     return hash.Value();
 }
 

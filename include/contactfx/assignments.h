@@ -38,10 +38,10 @@ struct MaterialAssignment
     std::string bodyName = "*";    ///< glob on the body's name: `*` any run, `?` one character
     std::string fixtureName = "*"; ///< glob on the fixture's name
     BodyTypeFilter bodyType = BodyTypeFilter::any;
-    std::optional<float> frictionAbove; ///< fixture friction > this (finite)
-    std::optional<float> frictionBelow; ///< fixture friction < this (finite, > frictionAbove)
-    std::optional<float> massAbove;     ///< body mass > this, kg (static and kinematic bodies weigh 0)
-    std::optional<float> massBelow;     ///< body mass < this, kg (> massAbove)
+    std::optional<float> frictionAbove; ///< fixture friction > this, [-1000, 1000]
+    std::optional<float> frictionBelow; ///< fixture friction < this, [-1000, 1000], > frictionAbove
+    std::optional<float> massAbove;     ///< body mass > this, kg, [-1e12, 1e12] (static, kinematic: 0)
+    std::optional<float> massBelow;     ///< body mass < this, kg, [-1e12, 1e12], > massAbove
 
     bool operator==(const MaterialAssignment&) const = default;
 };

@@ -13,10 +13,14 @@
 // callbacks.
 //
 // Lifetime: create after the world, destroy before it; one Effects per world at a time (destroy the old
-// one before creating its replacement). Contacts already touching when Effects is created are picked up
-// at the next world step (PreSolve). Effects installs itself as the world's contact
-// and destruction listener; give it the application's own listeners (EffectsDef or the setters) and it
-// forwards every callback to them. The destructor puts the application's listeners back.
+// one before creating its replacement: creating a second one throws InputError). Contacts already
+// touching when Effects is created are picked up at the next world step (PreSolve). Effects installs
+// itself as the world's contact and destruction listener; give it the application's own listeners
+// (EffectsDef or the setters, never b2World's setters while it lives) and it forwards every callback to
+// them. The destructor puts the application's listeners back. Through the destruction listener it
+// forgets fixtures destroyed with their body and notices when the application destroys the Box2D body of
+// a body-backed particle (ParticleBackend::body, the tutorial preset): that particle goes, and its body is
+// never destroyed twice.
 // Threading: one thread, the one that steps the world.
 #pragma once
 
@@ -60,7 +64,8 @@ struct EffectsDef
 class Effects
 {
 public:
-    /// Throws InputError (file "<api>", field path) when def.config is invalid.
+    /// Throws InputError (file "<api>", field path) when def.config is invalid, and (field "world") when
+    /// `world` already has an Effects object.
     Effects(b2World& world, const EffectsDef& def);
     ~Effects();
     Effects(const Effects&) = delete;
@@ -74,7 +79,10 @@ public:
     /// The fixture's material, or an invalid id.
     MaterialId Material(const b2Fixture* fixture) const;
     /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
-    /// material and its contacts. Fixtures destroyed with their body are handled automatically.
+    /// material and its contacts. Fixtures destroyed with their body are handled automatically. Without
+    /// it, a later fixture at the freed address does not inherit the material when it differs in body,
+    /// shape or geometry (counted in EffectsStats::staleMaterials); one re-created identically on the same
+    /// body cannot be told apart and keeps it (docs/api.md, "Destroying fixtures").
     void ForgetFixture(b2Fixture* fixture);
 
     void SetContactListener(b2ContactListener* listener);
@@ -82,6 +90,8 @@ public:
     void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
 
     /// Runs after each b2World::Step with the same dt (s, > 0): emission, spawning, particle motion.
+    /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the
+    /// world's gravity is not finite; nothing changes then.
     void Step(float dt);
 
     const EffectsStats& Stats() const { return m_stats; }

@@ -5,6 +5,10 @@
 // field (a JSON path such as `body[3].fixture[0].friction`, or a struct field such as
 // `rules[1].threshold`), and what was expected and found. Loaders collect every problem they can find
 // before giving up, so that a user fixes a file in one pass.
+//
+// A warning (Diagnostic::warning) is a problem that does not stop the input from loading but may not be
+// what the author meant: an unknown key in a scene, a polygon vertex Box2D drops. Loaders return warnings
+// apart from errors; `contactfx validate --strict` counts them as errors.
 #pragma once
 
 #include <stdexcept>
@@ -17,13 +21,15 @@ namespace cfx
 /// One problem in one input.
 struct Diagnostic
 {
-    std::string file;    ///< file name as the user gave it, or "<api>" for values passed in code
-    std::string path;    ///< JSON path or field name; empty when the problem is the whole file
-    std::string message; ///< what was expected and what was found
-    int line = 0;        ///< 1-based line for malformed JSON, 0 when unknown
-    int column = 0;      ///< 1-based column for malformed JSON, 0 when unknown
+    std::string file;     ///< file name as the user gave it, or "<api>" for values passed in code
+    std::string path;     ///< JSON path or field name; empty when the problem is the whole file
+    std::string message;  ///< what was expected and what was found
+    int line = 0;         ///< 1-based line for malformed JSON, 0 when unknown
+    int column = 0;       ///< 1-based column for malformed JSON, 0 when unknown
+    bool warning = false; ///< true: the input still loads (see the file comment)
 
-    /// "file:line:column: message" or "file: path: message", on one line.
+    /// "file:line:column: message" or "file: path: message", on one line; "warning: " before the message
+    /// of a warning.
     std::string ToString() const;
 };
 

@@ -44,7 +44,7 @@ struct IntensityModel
     FrictionMix friction = FrictionMix::sqrt;
     ManifoldPoints points = ManifoldPoints::all;
     /// Weight of the pressure between the surfaces, in 1/N (newtons: normal impulse / step time).
-    /// 0 ignores pressure (the tutorial). >= 0.
+    /// 0 ignores pressure (the tutorial). [0, 1000].
     float impulseWeight = 0.0f;
 
     bool operator==(const IntensityModel&) const = default;

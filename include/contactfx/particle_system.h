@@ -19,8 +19,11 @@
 // through static geometry: a particle with no free place is crushed (dies, and is counted). One-sided edges
 // and chains are solid only from their front. Particles never collide with each other. Body-backed particles
 // are Box2D bodies created and destroyed here (the tutorial's way, for particles that must push things);
-// their position and velocity are read back each step. Large pools are split across threads; the result
-// does not depend on the number of threads, bit for bit. No allocation per step once warmed up.
+// their position and velocity are read back each step. An application that destroys such a body itself
+// tells the system with ForgetBody (Effects does it for its own system through its destruction
+// listener): the particle goes, and the system never destroys that body again. Large pools are split across
+// threads; the result does not depend on the number of threads, bit for bit. No allocation per step once
+// warmed up.
 //
 // Lifetime: the world must outlive the system. Threading: Step, Spawn and the destructor must not run
 // while the world steps; the system's own helper threads only run inside Step.
@@ -105,6 +108,13 @@ struct ParticleCounters
     /// With checkParticles: particle steps whose centre's straight path crossed a static edge or chain it
     /// collides with (a two-sided edge from either side, a one-sided one from its front).
     std::uint64_t crossings = 0;
+    /// Pool particles that died because their position or velocity was not finite, or beyond 1e7 (m,
+    /// m/s): thrown out of the world by absurd numbers (a restitution of 1e30, a spawn at infinity).
+    /// Nothing not finite reaches the collision or the draw data.
+    std::uint64_t nonFinite = 0;
+    /// Body steps in which a body was left out of particle collision because its position, rotation,
+    /// centre or velocities were not finite, or beyond 1e7 (m, m/s, rad/s).
+    std::uint64_t skippedBodies = 0;
 };
 
 class ParticleSystem final
@@ -119,8 +129,16 @@ public:
 
     /// Adds a particle, recycling the oldest one when full.
     void Spawn(const ParticleSpawn& spawn);
-    /// Advances every particle by `dt` seconds (> 0) under `gravity` (m/s^2).
+    /// Advances every particle by `dt` seconds (> 0) under `gravity` (m/s^2). Throws InputError (file
+    /// "<api>", field "dt" or "gravity") when dt is not finite and > 0 or gravity is not finite; nothing
+    /// changes then.
     void Step(float dt, b2Vec2 gravity);
+    /// The application destroyed (or is about to destroy) `body`, the Box2D body of one of this system's
+    /// body-backed particles: the system forgets it at once and never destroys it; its particle leaves
+    /// the pool at the next Spawn or Step. Call it from a b2DestructionListener's
+    /// SayGoodbye(b2Fixture*) with fixture->GetBody(), or before b2World::DestroyBody. Any other body
+    /// (or null): nothing happens. Effects calls it for its own system.
+    void ForgetBody(const b2Body* body);
     /// Rebuilds the static geometry cache at the next step. Only needed after editing a static
     /// fixture's shape in place; everything else is detected (docs/particles.md).
     void InvalidateStaticGeometry();

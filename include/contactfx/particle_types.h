@@ -27,7 +27,8 @@ enum class ParticleBackend : std::uint8_t
     body, ///< a Box2D body with a circle fixture (the tutorial's way): pushes what it hits, costs more
 };
 
-/// One particle type. Units: metres, seconds, kilograms. Validated when an Effects object is created.
+/// One particle type. Units: metres, seconds, kilograms. Validated when an Effects object is created; the
+/// ranges keep the simulation finite and its cost bounded (docs/effects-config.md).
 struct ParticleTypeDef
 {
     std::string name; ///< unique, non-empty
@@ -35,41 +36,41 @@ struct ParticleTypeDef
     // Life: 1 at birth at most, the particle dies at 0.
     /// Start life = clamp(lifeBase + lifeFromIntensity * intensity, 0, 1). The tutorial: 0 + 0.3 * I.
     float lifeBase = 1.0f;          ///< [0, 1]
-    float lifeFromIntensity = 0.0f; ///< >= 0, per unit of intensity
-    /// Seconds for life to fall from 1 to 0 (a particle starting at life 0.5 lives half of it). > 0.
+    float lifeFromIntensity = 0.0f; ///< [0, 1000], per unit of intensity
+    /// Seconds for life to fall from 1 to 0 (a particle starting at life 0.5 lives half of it). (0, 3600].
     float lifetime = 1.0f;
 
     // Start velocity = inheritA * vA + inheritB * vB + slipFactor * (relative tangential velocity of the
     // other body over the surface) + normalSpeed * surface normal + U(-spread, spread) per axis.
     // A and B are the bodies whose materials are the rule's materialA and materialB.
-    float inheritA = 0.0f;    ///< fraction of body A's velocity at the contact point
-    float inheritB = 0.0f;    ///< fraction of body B's velocity at the contact point
-    float slipFactor = 0.0f;  ///< fraction of the slip velocity (sparks thrown along the scrape)
-    float normalSpeed = 0.0f; ///< m/s away from the surface
-    float spread = 0.0f;      ///< m/s, >= 0: uniform random per axis in [-spread, spread]
+    float inheritA = 0.0f;    ///< [-10, 10]: fraction of body A's velocity at the contact point
+    float inheritB = 0.0f;    ///< [-10, 10]: fraction of body B's velocity at the contact point
+    float slipFactor = 0.0f;  ///< [-10, 10]: fraction of the slip velocity (sparks along the scrape)
+    float normalSpeed = 0.0f; ///< m/s away from the surface, [-1000, 1000]
+    float spread = 0.0f;      ///< m/s, [0, 1000]: uniform random per axis in [-spread, spread]
 
     // Motion.
-    float gravityScale = 1.0f; ///< times the world's gravity; negative floats up
-    float drag = 0.0f;         ///< 1/s, >= 0: Box2D's linear damping, v *= 1 / (1 + dt * drag)
+    float gravityScale = 1.0f; ///< [-100, 100]: times the world's gravity; negative floats up
+    float drag = 0.0f;         ///< 1/s, [0, 1000]: Box2D's linear damping, v *= 1 / (1 + dt * drag)
 
     // Collision with the world's fixtures (never with other particles).
     bool collide = true;
-    float radius = 0.02f;                ///< m, > 0
+    float radius = 0.02f;                ///< m, (0, 10]
     float restitution = 0.3f;            ///< [0, 1]: bounce
-    float friction = 0.5f;               ///< >= 0: Coulomb friction on each hit
+    float friction = 0.5f;               ///< [0, 1000]: Coulomb friction on each hit
     std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these
     std::uint16_t maskBits = 0x0001;     ///< ... and its categoryBits are in these
 
     // Backend.
     ParticleBackend backend = ParticleBackend::pool;
-    float density = 1.0f; ///< kg/m^2, > 0; body backend only
+    float density = 1.0f; ///< kg/m^2, (0, 1e6]; body backend only
 
     // Looks over life (life 1 -> start, life 0 -> end); the drawn opacity is colour alpha * life.
     Color colorStart{1.0f, 1.0f, 1.0f, 1.0f};
     Color colorEnd{1.0f, 1.0f, 1.0f, 1.0f};
-    float sizeStart = 0.05f; ///< m, drawn diameter at birth, > 0
-    float sizeEnd = 0.05f;   ///< m, drawn diameter at death, > 0
-    /// s, >= 0: drawn as a line along the velocity covering this much of the motion (sparks); 0 draws
+    float sizeStart = 0.05f; ///< m, drawn diameter at birth, (0, 100]
+    float sizeEnd = 0.05f;   ///< m, drawn diameter at death, (0, 100]
+    /// s, [0, 10]: drawn as a line along the velocity covering this much of the motion (sparks); 0 draws
     /// a soft round point.
     float streak = 0.0f;
 

@@ -52,23 +52,23 @@ struct RuleDef
     std::string materialB;
     std::string particleType;
     IntensityModel intensity;
-    /// Intensities <= threshold emit nothing (rate: the body pair's; perStep: each sample's). >= 0.
+    /// Intensities <= threshold emit nothing (rate: the body pair's; perStep: each sample's). [0, 1e6].
     float threshold = 1.0f;
     EmissionMode emission = EmissionMode::rate;
-    /// Particles per second per unit of intensity above the threshold (rate mode). >= 0.
+    /// Particles per second per unit of intensity above the threshold (rate mode). [0, 1e6].
     float ratePerIntensity = 50.0f;
-    /// Cap on one body pair's rate, particles per second (rate mode). >= 0.
+    /// Cap on one body pair's rate, particles per second (rate mode). [0, 1e5].
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 
     // Events (events.h) and impact bursts.
-    /// A scrape ends after its intensity has stayed at or below the threshold this long, s, >= 0.
+    /// A scrape ends after its intensity has stayed at or below the threshold this long, s, [0, 3600].
     float scrapeEndDelay = 0.1f;
-    /// Approach speed along the normal at first touch that makes an impact event, m/s, >= 0.
+    /// Approach speed along the normal at first touch that makes an impact event, m/s, [0, 1e4].
     float impactThreshold = 2.0f;
-    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold, >= 0.
+    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold, [0, 1e4].
     float burstPerSpeed = 0.0f;
-    /// Most particles one impact bursts, >= 0.
+    /// Most particles one impact bursts, [0, 1e5].
     float burstMax = 50.0f;
 
     bool operator==(const RuleDef&) const = default;

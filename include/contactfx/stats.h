@@ -41,6 +41,21 @@ struct EffectsStats
     /// Particles not spawned because no start outside every solid existed near their contact (piles,
     /// crevices): a particle never starts inside.
     std::uint64_t spawnRejected = 0;
+    /// Particles that died, or were never stored, because their position or velocity was not finite or
+    /// beyond 1e7 (m, m/s): thrown out of the world by absurd numbers (ParticleCounters::nonFinite).
+    std::uint64_t nonFinite = 0;
+    /// Body steps in which a body was left out of particle collision because its state was not finite
+    /// or beyond 1e7 (ParticleCounters::skippedBodies).
+    std::uint64_t skippedBodies = 0;
+    /// Materials dropped because their fixture had been destroyed without Effects::ForgetFixture and a
+    /// different fixture (another body, shape or geometry) took its address: it did not inherit them.
+    /// Non-zero means a missing ForgetFixture call (docs/api.md).
+    std::uint64_t staleMaterials = 0;
+    /// Manifold points, impacts and particles skipped because something they are made of was not
+    /// finite: a body with a NaN or infinite velocity or position, a NaN friction, an impulse beyond the
+    /// float range, a start velocity that overflowed. Nothing non-finite reaches an intensity, a particle
+    /// or an event.
+    std::uint64_t nonFiniteSamples = 0;
 };
 
 } // namespace cfx

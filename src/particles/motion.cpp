@@ -238,6 +238,16 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
         bool crushed = false;
         const float clearance = Collide(type, geometry, dt, part, mark, position, velocity, crushed);
+        if (!Sane(position) || !Sane(velocity))
+        {
+            // A surface's numbers threw it out of the world (a restitution of 1e30): it dies where it
+            // started, and the next step removes it.
+            position = b2Vec2(listed.startX[k], listed.startY[k]);
+            crushed = false;
+            pool.life[slot] = 0.0f;
+            velocity.SetZero();
+            ++counts.nonFinite;
+        }
         if (crushed)
         {
             // Dies where it was squeezed (outside the static geometry): life 0 draws nothing, and the
@@ -261,7 +271,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
 template <bool kCollide, bool kMoving, bool kDistrust>
 std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, const b2AABB& movingBounds,
                        std::uint32_t& read, std::uint32_t& write, std::uint32_t count, Listed& listed,
-                       std::uint32_t& listedCount, std::vector<b2Body*>& deadBodies)
+                       std::uint32_t& listedCount, std::vector<b2Body*>& deadBodies, StepCounts& counts)
 {
     // The dead are counted rather than the living: a counter touched every particle ends up in memory
     // when registers run short, and its load-add-store then paces the whole loop.
@@ -303,7 +313,8 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
                                    BoxesOverlap(PathBox(start, position, type.side.radius), movingBounds));
             }
         }
-        if (life > 0.0f)
+        const bool sane = Sane(position);
+        if ((life > 0.0f) & sane)
         {
             pool.positionX[write] = position.x;
             pool.positionY[write] = position.y;
@@ -335,6 +346,7 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
         else
         {
             ++dead;
+            counts.nonFinite += life > 0.0f ? 1u : 0u; // alive, but not anywhere a simulation can be
             if (type.bodyBacked)
             {
                 deadBodies.push_back(pool.body[read]);
@@ -363,7 +375,7 @@ std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const Wor
         const std::uint32_t count = std::min(kBlock, end - first);
         std::uint32_t listedCount = 0;
         kept += FlyBlock<kCollide, kMoving, kDistrust>(pool, types, dt, movingBounds, read, write, count,
-                                                       listed, listedCount, dead);
+                                                       listed, listedCount, dead, counts);
         if constexpr (kCollide)
         {
             SweepListed(pool, types, *geometry, dt, trust, listed, listedCount, counts);

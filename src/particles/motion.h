@@ -77,7 +77,8 @@ struct StepTrust
 /// What a run of a step counts.
 struct StepCounts
 {
-    std::uint64_t crushed = 0; ///< particles squeezed by a moving body with no free place (they died)
+    std::uint64_t crushed = 0;   ///< particles squeezed by a moving body with no free place (they died)
+    std::uint64_t nonFinite = 0; ///< particles whose position or velocity was not Sane (they died)
 };
 
 /// Advances logical indices [begin, end) by `dt` seconds; pool particles collide with `geometry` when

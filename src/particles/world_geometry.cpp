@@ -13,7 +13,9 @@
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 
 namespace cfx::particles
 {
@@ -124,6 +126,15 @@ b2AABB Grown(const b2AABB& box, float by)
     return grown;
 }
 
+// Whether a body's state is one to simulate with (see kMaxCoordinate): its position, rotation, centre and
+// velocities.
+bool IsSane(const b2Body& body)
+{
+    const b2Transform& xf = body.GetTransform();
+    return Sane(xf.p) & Sane(b2Vec2(xf.q.c, xf.q.s)) & Sane(body.GetWorldCenter()) &
+           Sane(body.GetLinearVelocity()) & Sane(b2Vec2(body.GetAngularVelocity(), 0.0f));
+}
+
 bool HasSolidFixture(const b2Body& body)
 {
     for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
@@ -191,6 +202,15 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
     {
         if (!body->IsEnabled())
         {
+            continue;
+        }
+        if (!IsSane(*body))
+        {
+            ++m_skippedBodies; // and left out of the static cache or this step's moving shapes
+            if (body->GetType() == b2_staticBody)
+            {
+                signature.Add(body); // so that becoming sane again rebuilds the cache
+            }
             continue;
         }
         if (body->GetType() == b2_staticBody)
@@ -281,7 +301,7 @@ void WorldGeometry::BuildStatic(b2World& world)
     m_polygonNormals.clear();
     for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
     {
-        if (!body->IsEnabled() || body->GetType() != b2_staticBody)
+        if (!body->IsEnabled() || body->GetType() != b2_staticBody || !IsSane(*body))
         {
             continue;
         }
@@ -368,7 +388,72 @@ void WorldGeometry::BuildStatic(b2World& world)
             }
         }
     }
+    DropDuplicatePrimitives();
     m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood, 0, &PrimitiveTouches, this);
+}
+
+void WorldGeometry::DropDuplicatePrimitives()
+{
+    // Everything that decides what a particle meets there: the shape, its filter and its material.
+    auto contents = [&](const Primitive& primitive)
+    {
+        Signature hash;
+        hash.Add(primitive.a);
+        hash.Add(primitive.b);
+        hash.Add(primitive.normal);
+        hash.Add(primitive.scalar);
+        hash.Add((static_cast<std::uint64_t>(primitive.kind) << 48u) |
+                 (static_cast<std::uint64_t>(primitive.count) << 40u) |
+                 (static_cast<std::uint64_t>(primitive.oneSided) << 32u) |
+                 (static_cast<std::uint64_t>(primitive.categoryBits) << 16u) | primitive.maskBits);
+        const SurfaceMaterial& material = m_materials[primitive.material];
+        hash.Add(material.friction);
+        hash.Add(material.restitution);
+        hash.Add(material.restSpeed);
+        if (primitive.kind == Kind::polygon)
+        {
+            for (std::uint32_t i = primitive.first; i < primitive.first + primitive.count; ++i)
+            {
+                hash.Add(m_polygonVertices[i]);
+            }
+        }
+        return hash.Value();
+    };
+    auto same = [&](const Primitive& x, const Primitive& y)
+    {
+        const SurfaceMaterial& mx = m_materials[x.material];
+        const SurfaceMaterial& my = m_materials[y.material];
+        bool equal = x.kind == y.kind && x.count == y.count && x.oneSided == y.oneSided &&
+                     x.categoryBits == y.categoryBits && x.maskBits == y.maskBits && Word(x.a) == Word(y.a) &&
+                     Word(x.b) == Word(y.b) && Word(x.normal) == Word(y.normal) &&
+                     std::bit_cast<std::uint32_t>(x.scalar) == std::bit_cast<std::uint32_t>(y.scalar) &&
+                     std::memcmp(&mx, &my, sizeof mx) == 0;
+        for (std::uint32_t i = 0; equal && x.kind == Kind::polygon && i < x.count; ++i)
+        {
+            equal = Word(m_polygonVertices[x.first + i]) == Word(m_polygonVertices[y.first + i]);
+        }
+        return equal;
+    };
+    std::unordered_multimap<std::uint64_t, std::uint32_t> seen;
+    seen.reserve(m_primitives.size());
+    std::uint32_t kept = 0;
+    for (std::uint32_t index = 0; index < m_primitives.size(); ++index)
+    {
+        const Primitive& primitive = m_primitives[index];
+        const std::uint64_t hash = contents(primitive);
+        const auto [first, last] = seen.equal_range(hash);
+        if (std::any_of(first, last,
+                        [&](const auto& entry) { return same(m_primitives[entry.second], primitive); }))
+        {
+            continue; // the same shape again: a particle meets it once
+        }
+        seen.emplace(hash, kept);
+        m_primitives[kept] = primitive;
+        m_primitiveBoxes[kept] = m_primitiveBoxes[index];
+        ++kept;
+    }
+    m_primitives.resize(kept);
+    m_primitiveBoxes.resize(kept);
 }
 
 bool WorldGeometry::PrimitiveTouches(const void* context, std::uint32_t index, const b2AABB& region)

@@ -92,6 +92,17 @@ inline bool BoxesOverlap(const b2AABB& a, const b2AABB& b)
            (a.lowerBound.x <= b.upperBound.x) & (a.lowerBound.y <= b.upperBound.y);
 }
 
+/// The largest coordinate (m), velocity component (m/s) or angular velocity (rad/s) the particle system
+/// simulates with: a particle that leaves it dies, and a body beyond it is skipped (both counted). Beyond
+/// it a float's spacing is a metre or more.
+inline constexpr float kMaxCoordinate = 1.0e7f;
+
+/// Whether both components are finite and within kMaxCoordinate; not-a-number fails. No branch.
+inline bool Sane(b2Vec2 v)
+{
+    return (std::abs(v.x) <= kMaxCoordinate) & (std::abs(v.y) <= kMaxCoordinate);
+}
+
 /// What a bound on moving geometry is grown by (m) so that rounding in the body-frame sweeps, whose
 /// coordinates are up to `magnitude` (m) in size, never lets the bound reject a touch the sweep would
 /// find: 1 mm plus a millionth of the magnitude (float rounding is 6e-8 of it per operation).
@@ -151,6 +162,9 @@ public:
 
     bool HasStatic() const { return !m_staticGrid.Empty(); }
     bool HasMoving() const { return !m_movingShapes.empty(); }
+    /// Body steps skipped since creation: a scan (or a static build) met a body whose transform, centre
+    /// or velocities were not Sane (set to not-a-number or something absurd by the application).
+    std::uint64_t SkippedBodies() const { return m_skippedBodies; }
     /// Times the static cache was built (for tests).
     std::uint64_t StaticBuilds() const { return m_builds; }
     std::size_t StaticPrimitives() const { return m_primitives.size(); }
@@ -216,12 +230,16 @@ private:
     /// The box the child covers during the step (see the file comment), grown by a little for rounding.
     static b2AABB SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach);
     void BuildStatic(b2World& world);
+    /// Keeps one of each set of identical primitives (same shape, filter and material: a fixture
+    /// duplicated by the application or an editor), so that their number does not multiply every sweep.
+    void DropDuplicatePrimitives();
     /// Grid::Touches for the static primitives (`context`: this).
     static bool PrimitiveTouches(const void* context, std::uint32_t index, const b2AABB& region);
     class Nearest;
 
     std::uint64_t m_signature = 0;
     std::uint64_t m_builds = 0;
+    std::uint64_t m_skippedBodies = 0;
     std::vector<SurfaceMaterial> m_materials;       ///< of static fixtures
     std::vector<SurfaceMaterial> m_movingMaterials; ///< of this step's moving fixtures
     std::vector<Primitive> m_primitives;

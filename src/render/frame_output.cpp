@@ -12,6 +12,7 @@
 #include <bit>
 #include <cctype>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -210,20 +211,83 @@ void PngSequenceSink::Write(const CairoRenderer& frame)
     ++m_next;
 }
 
-VideoSink::VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps)
-    : m_file(std::move(file)), m_width(width), m_height(height)
+VideoProbe ProbeVideo(const std::filesystem::path& file)
+{
+    const std::filesystem::path ffprobe = FindProgram("ffprobe");
+    if (ffprobe.empty())
+    {
+        throw std::runtime_error("ffprobe not found: install ffmpeg (with ffprobe) to write .mp4/.gif");
+    }
+    // Counting packets reads the whole file without decoding it: a cut-off video has fewer.
+    const std::string command = ShellQuote(ffprobe.string()) +
+                                " -v error -count_packets -select_streams v:0 -show_entries "
+                                "stream=nb_read_packets:format=duration -of default=noprint_wrappers=1 " +
+                                ShellQuote(file.string()) + " 2>&1";
+    VideoProbe probe;
+    std::FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr)
+    {
+        probe.message = "cannot start ffprobe";
+        return probe;
+    }
+    bool haveFrames = false;
+    bool haveSeconds = false;
+    char line[512];
+    while (std::fgets(line, sizeof line, pipe) != nullptr)
+    {
+        std::string text = line;
+        while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
+        {
+            text.pop_back();
+        }
+        char* end = nullptr;
+        if (text.rfind("nb_read_packets=", 0) == 0)
+        {
+            probe.frames = std::strtoll(text.c_str() + 16, &end, 10);
+            haveFrames = end != text.c_str() + 16;
+        }
+        else if (text.rfind("duration=", 0) == 0)
+        {
+            probe.seconds = std::strtod(text.c_str() + 9, &end);
+            haveSeconds = end != text.c_str() + 9;
+        }
+        else if (!text.empty() && probe.message.empty())
+        {
+            probe.message = text;
+        }
+    }
+    const int status = ::pclose(pipe);
+    probe.ok = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && haveFrames && haveSeconds;
+    if (!probe.ok && probe.message.empty())
+    {
+        probe.message = "no video stream or duration found";
+    }
+    return probe;
+}
+
+VideoSink::VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps,
+                     std::filesystem::path temporary)
+    : m_file(std::move(file)), m_temporary(std::move(temporary)), m_width(width), m_height(height), m_fps(fps)
 {
     const std::filesystem::path ffmpeg = FindProgram("ffmpeg");
     if (ffmpeg.empty())
     {
         throw std::runtime_error("ffmpeg not found: install ffmpeg to write .mp4/.gif");
     }
+    if (FindProgram("ffprobe").empty())
+    {
+        throw std::runtime_error("ffprobe not found: install ffmpeg (with ffprobe) to write .mp4/.gif");
+    }
     if (kind == OutputKind::mp4 && (width % 2 != 0 || height % 2 != 0))
     {
         throw std::invalid_argument("an .mp4 needs an even width and height, found " + std::to_string(width) +
                                     "x" + std::to_string(height));
     }
-    m_temporary = TemporaryBeside(m_file);
+    m_rename = m_temporary.empty();
+    if (m_rename)
+    {
+        m_temporary = TemporaryBeside(m_file);
+    }
     std::string command = ShellQuote(ffmpeg.string()) +
                           " -hide_banner -loglevel error -y -f rawvideo -pix_fmt " + kCairoPixelFormat +
                           " -s " + std::to_string(width) + "x" + std::to_string(height) + " -framerate " +
@@ -249,7 +313,10 @@ VideoSink::VideoSink(std::filesystem::path file, OutputKind kind, int width, int
 
 VideoSink::~VideoSink()
 {
-    Abort();
+    if (!m_finished)
+    {
+        Abort();
+    }
     std::signal(SIGPIPE, m_previousSigpipe);
 }
 
@@ -280,6 +347,27 @@ void VideoSink::Write(const CairoRenderer& frame)
             throw InputError(m_file.string(), "", "ffmpeg stopped taking frames (see its message above)");
         }
     }
+    ++m_frames;
+}
+
+void VideoSink::CheckComplete()
+{
+    const VideoProbe probe = ProbeVideo(m_temporary);
+    const double expected = static_cast<double>(m_frames) / m_fps;
+    // GIF delays are whole centiseconds, and an MP4's duration may round: allow one frame and 20 ms.
+    const double slack = 1.0 / m_fps + 0.02;
+    if (probe.ok && probe.frames == m_frames && probe.seconds >= expected - slack)
+    {
+        return;
+    }
+    Abort();
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "%lld of %lld frames, %.2f of %.2f s", probe.frames, m_frames,
+                  probe.seconds, expected);
+    throw InputError(m_file.string(), "",
+                     "ffmpeg exited with success but the video is incomplete (" +
+                         (probe.ok ? std::string(numbers) : "ffprobe: " + probe.message) +
+                         "; a full disk?): no file written");
 }
 
 void VideoSink::Finish()
@@ -300,12 +388,19 @@ void VideoSink::Finish()
                                     : std::string("abnormal end");
         throw InputError(m_file.string(), "", "ffmpeg failed (" + how + ")");
     }
+    CheckComplete();
+    if (!m_rename)
+    {
+        m_finished = true; // the caller's temporary file now: kept
+        return;
+    }
     std::filesystem::rename(m_temporary, m_file, error);
     if (error)
     {
         Abort();
         throw InputError(m_file.string(), "", "cannot write: " + error.message());
     }
+    m_finished = true;
 }
 
 std::unique_ptr<FrameSink> MakeSink(const std::filesystem::path& path, OutputKind kind, int width, int height,

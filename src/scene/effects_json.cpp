@@ -1,15 +1,19 @@
 // Effects config JSON <-> EffectsConfig.
 //
-// One table per struct lists each JSON field with its member, so reading, writing and the unknown-field
-// check cannot drift apart. Value ranges are checked once, by cfx::Validate, whose paths are the JSON
-// paths because field names are member names.
+// The field tables of contactfx/config_fields.h drive reading, writing and the unknown-field check, so the
+// three cannot drift apart from each other, from cfx::Validate or from the docs. Value ranges and names are
+// checked once, by cfx::Validate, whose paths are the JSON paths because field names are member names; it
+// runs in the same pass as reading, so that a file with a misspelt field and a zero lifetime reports both.
 #include "contactfx/scene/effects_json.h"
 
+#include "contactfx/config_fields.h"
 #include "contactfx/scene/text_file.h"
 #include "scene/json_reader.h"
 #include "scene/json_text.h"
 #include "scene/json_writer.h"
+#include "scene/known_keys.h"
 
+#include <algorithm>
 #include <array>
 #include <fstream>
 #include <sstream>
@@ -25,130 +29,31 @@ using scene_detail::DiagnosticList;
 using scene_detail::Json;
 using scene_detail::ObjectReader;
 
-// A named enum value.
-template <typename E> struct EnumName
+template <typename S> bool IsNested(const Field<S>& field)
 {
-    E value;
-    const char* name;
-};
-
-constexpr std::array kSpeedModes{EnumName<SpeedMode>{SpeedMode::full, "full"},
-                                 EnumName<SpeedMode>{SpeedMode::tangential, "tangential"}};
-constexpr std::array kFrictionMixes{
-    EnumName<FrictionMix>{FrictionMix::product, "product"}, EnumName<FrictionMix>{FrictionMix::sqrt, "sqrt"},
-    EnumName<FrictionMix>{FrictionMix::min, "min"}, EnumName<FrictionMix>{FrictionMix::max, "max"},
-    EnumName<FrictionMix>{FrictionMix::mean, "mean"}};
-constexpr std::array kManifoldPoints{EnumName<ManifoldPoints>{ManifoldPoints::first, "first"},
-                                     EnumName<ManifoldPoints>{ManifoldPoints::all, "all"}};
-constexpr std::array kEmissionModes{EnumName<EmissionMode>{EmissionMode::rate, "rate"},
-                                    EnumName<EmissionMode>{EmissionMode::perStep, "perStep"}};
-constexpr std::array kPlacements{EnumName<SpawnPlacement>{SpawnPlacement::surface, "surface"},
-                                 EnumName<SpawnPlacement>{SpawnPlacement::tutorialDrop, "tutorialDrop"}};
-constexpr std::array kBackends{EnumName<ParticleBackend>{ParticleBackend::pool, "pool"},
-                               EnumName<ParticleBackend>{ParticleBackend::body, "body"}};
-constexpr std::array kRecyclePolicies{EnumName<RecyclePolicy>{RecyclePolicy::oldest, "oldest"},
-                                      EnumName<RecyclePolicy>{RecyclePolicy::lowestLife, "lowestLife"}};
-
-constexpr std::array kBodyTypeFilters{EnumName<BodyTypeFilter>{BodyTypeFilter::any, "any"},
-                                      EnumName<BodyTypeFilter>{BodyTypeFilter::staticBody, "static"},
-                                      EnumName<BodyTypeFilter>{BodyTypeFilter::kinematicBody, "kinematic"},
-                                      EnumName<BodyTypeFilter>{BodyTypeFilter::dynamicBody, "dynamic"}};
-
-// One JSON field of struct S: a member of one of the supported kinds, or a nested enum.
-template <typename S> struct Field
-{
-    const char* key;
-    std::variant<float S::*, bool S::*, std::string S::*, std::uint16_t S::*, Color S::*,
-                 std::optional<float> S::*>
-        member;
-};
-
-const std::array kParticleFields{
-    Field<ParticleTypeDef>{"name", &ParticleTypeDef::name},
-    Field<ParticleTypeDef>{"lifeBase", &ParticleTypeDef::lifeBase},
-    Field<ParticleTypeDef>{"lifeFromIntensity", &ParticleTypeDef::lifeFromIntensity},
-    Field<ParticleTypeDef>{"lifetime", &ParticleTypeDef::lifetime},
-    Field<ParticleTypeDef>{"inheritA", &ParticleTypeDef::inheritA},
-    Field<ParticleTypeDef>{"inheritB", &ParticleTypeDef::inheritB},
-    Field<ParticleTypeDef>{"slipFactor", &ParticleTypeDef::slipFactor},
-    Field<ParticleTypeDef>{"normalSpeed", &ParticleTypeDef::normalSpeed},
-    Field<ParticleTypeDef>{"spread", &ParticleTypeDef::spread},
-    Field<ParticleTypeDef>{"gravityScale", &ParticleTypeDef::gravityScale},
-    Field<ParticleTypeDef>{"drag", &ParticleTypeDef::drag},
-    Field<ParticleTypeDef>{"collide", &ParticleTypeDef::collide},
-    Field<ParticleTypeDef>{"radius", &ParticleTypeDef::radius},
-    Field<ParticleTypeDef>{"restitution", &ParticleTypeDef::restitution},
-    Field<ParticleTypeDef>{"friction", &ParticleTypeDef::friction},
-    Field<ParticleTypeDef>{"categoryBits", &ParticleTypeDef::categoryBits},
-    Field<ParticleTypeDef>{"maskBits", &ParticleTypeDef::maskBits},
-    Field<ParticleTypeDef>{"density", &ParticleTypeDef::density},
-    Field<ParticleTypeDef>{"colorStart", &ParticleTypeDef::colorStart},
-    Field<ParticleTypeDef>{"colorEnd", &ParticleTypeDef::colorEnd},
-    Field<ParticleTypeDef>{"sizeStart", &ParticleTypeDef::sizeStart},
-    Field<ParticleTypeDef>{"sizeEnd", &ParticleTypeDef::sizeEnd},
-    Field<ParticleTypeDef>{"streak", &ParticleTypeDef::streak},
-};
-
-const std::array kRuleFields{
-    Field<RuleDef>{"materialA", &RuleDef::materialA},
-    Field<RuleDef>{"materialB", &RuleDef::materialB},
-    Field<RuleDef>{"particleType", &RuleDef::particleType},
-    Field<RuleDef>{"threshold", &RuleDef::threshold},
-    Field<RuleDef>{"ratePerIntensity", &RuleDef::ratePerIntensity},
-    Field<RuleDef>{"maxRate", &RuleDef::maxRate},
-    Field<RuleDef>{"scrapeEndDelay", &RuleDef::scrapeEndDelay},
-    Field<RuleDef>{"impactThreshold", &RuleDef::impactThreshold},
-    Field<RuleDef>{"burstPerSpeed", &RuleDef::burstPerSpeed},
-    Field<RuleDef>{"burstMax", &RuleDef::burstMax},
-};
-
-// Optional bounds are written only when set.
-const std::array kAssignmentFields{
-    Field<MaterialAssignment>{"material", &MaterialAssignment::material},
-    Field<MaterialAssignment>{"bodyName", &MaterialAssignment::bodyName},
-    Field<MaterialAssignment>{"fixtureName", &MaterialAssignment::fixtureName},
-    Field<MaterialAssignment>{"frictionAbove", &MaterialAssignment::frictionAbove},
-    Field<MaterialAssignment>{"frictionBelow", &MaterialAssignment::frictionBelow},
-    Field<MaterialAssignment>{"massAbove", &MaterialAssignment::massAbove},
-    Field<MaterialAssignment>{"massBelow", &MaterialAssignment::massBelow},
-};
-
-const std::array kIntensityFields{
-    Field<IntensityModel>{"impulseWeight", &IntensityModel::impulseWeight},
-};
-
-template <typename E, std::size_t N> const char* NameOf(const std::array<EnumName<E>, N>& names, E value)
-{
-    for (const EnumName<E>& entry : names)
-    {
-        if (entry.value == value)
-        {
-            return entry.name;
-        }
-    }
-    return "?";
+    return std::holds_alternative<IntensityModel S::*>(field.member);
 }
 
-template <typename E, std::size_t N>
-void ReadEnum(const ObjectReader& reader, const char* key, const std::array<EnumName<E>, N>& names, E& out)
+void ReadChoice(const ObjectReader& reader, std::string_view key, std::span<const std::string_view> names,
+                int& out)
 {
     if (!reader.Has(key))
     {
         return;
     }
     std::string text = reader.String(key);
-    for (const EnumName<E>& entry : names)
+    for (std::size_t i = 0; i < names.size(); ++i)
     {
-        if (text == entry.name)
+        if (text == names[i])
         {
-            out = entry.value;
+            out = static_cast<int>(i);
             return;
         }
     }
     std::string expected;
-    for (const EnumName<E>& entry : names)
+    for (std::string_view name : names)
     {
-        expected += (expected.empty() ? "\"" : ", \"") + std::string(entry.name) + "\"";
+        expected += (expected.empty() ? "\"" : ", \"") + std::string(name) + "\"";
     }
     reader.Diagnostics().Add(reader.FieldPath(key), "expected one of " + expected + ", found " +
                                                         scene_detail::Describe(*reader.Find(key)));
@@ -173,85 +78,114 @@ std::optional<Color> ReadColor(const Json& value, const std::string& path, Diagn
     return color;
 }
 
-template <typename S, std::size_t N>
-void ReadFields(const ObjectReader& reader, const std::array<Field<S>, N>& fields, S& out)
+// One field of the object. Ranges are not checked here but by Validate, in the same pass; integers are only
+// limited to what their member holds (budget counts to 2^30, which fits an int).
+template <typename S> void ReadField(const ObjectReader& reader, const Field<S>& field, S& out)
 {
-    for (const Field<S>& field : fields)
+    const std::string_view key = field.name;
+    const Json* value = reader.Find(key);
+    if (value == nullptr)
     {
-        const Json* value = reader.Find(field.key);
-        if (value == nullptr)
-        {
-            continue;
-        }
-        const std::string path = reader.FieldPath(field.key);
-        DiagnosticList& diagnostics = reader.Diagnostics();
-        std::visit(
-            [&](auto member)
-            {
-                using T = std::remove_reference_t<decltype(out.*member)>;
-                if constexpr (std::is_same_v<T, float>)
-                {
-                    out.*member = reader.Float(field.key, out.*member);
-                }
-                else if constexpr (std::is_same_v<T, bool>)
-                {
-                    out.*member = reader.Bool(field.key, out.*member);
-                }
-                else if constexpr (std::is_same_v<T, std::string>)
-                {
-                    out.*member = reader.String(field.key, out.*member);
-                }
-                else if constexpr (std::is_same_v<T, std::uint16_t>)
-                {
-                    out.*member = static_cast<std::uint16_t>(reader.Int(field.key, out.*member, 0, 0xFFFF));
-                }
-                else if constexpr (std::is_same_v<T, std::optional<float>>)
-                {
-                    out.*member = reader.OptionalFloat(field.key);
-                }
-                else
-                {
-                    if (std::optional<Color> color = ReadColor(*value, path, diagnostics))
-                    {
-                        out.*member = *color;
-                    }
-                }
-            },
-            field.member);
+        return;
     }
+    std::visit(
+        [&](auto member)
+        {
+            using M = decltype(member);
+            if constexpr (std::is_same_v<M, float S::*>)
+            {
+                out.*member = reader.Float(key, out.*member);
+            }
+            else if constexpr (std::is_same_v<M, std::optional<float> S::*>)
+            {
+                out.*member = reader.OptionalFloat(key);
+            }
+            else if constexpr (std::is_same_v<M, bool S::*>)
+            {
+                out.*member = reader.Bool(key, out.*member);
+            }
+            else if constexpr (std::is_same_v<M, std::string S::*>)
+            {
+                out.*member = reader.String(key, out.*member);
+            }
+            else if constexpr (std::is_same_v<M, std::uint16_t S::*>)
+            {
+                out.*member = static_cast<std::uint16_t>(reader.Int(key, out.*member, 0, 0xFFFF));
+            }
+            else if constexpr (std::is_same_v<M, std::uint32_t S::*>)
+            {
+                out.*member =
+                    static_cast<std::uint32_t>(reader.Int(key, static_cast<int>(out.*member), 0, 1 << 30));
+            }
+            else if constexpr (std::is_same_v<M, Color S::*>)
+            {
+                if (std::optional<Color> color =
+                        ReadColor(*value, reader.FieldPath(key), reader.Diagnostics()))
+                {
+                    out.*member = *color;
+                }
+            }
+            else if constexpr (std::is_same_v<M, ChoiceMember<S>>)
+            {
+                int index = member.get(out);
+                ReadChoice(reader, key, field.choices, index);
+                member.set(out, index);
+            }
+            // Nested objects are read by ReadObject, after the fields of their parent.
+        },
+        field.member);
 }
 
-// Reports fields that no table knows.
-void CheckKnownKeys(const Json& object, const std::string& path,
-                    std::initializer_list<std::string_view> extra, std::span<const char* const> known,
+// Reports fields that no table knows, naming the nearest known one.
+void CheckKnownKeys(const Json& object, const std::string& path, std::span<const std::string_view> names,
                     DiagnosticList& diagnostics)
 {
     for (auto it = object.begin(); it != object.end(); ++it)
     {
-        bool found = false;
-        for (const char* key : known)
+        if (std::find(names.begin(), names.end(), it.key()) == names.end())
         {
-            found = found || it.key() == key;
-        }
-        for (std::string_view key : extra)
-        {
-            found = found || it.key() == key;
-        }
-        if (!found)
-        {
-            diagnostics.Add(scene_detail::JoinPath(path, it.key()), "unknown field");
+            diagnostics.Add(scene_detail::JoinPath(path, it.key()),
+                            scene_detail::UnknownKeyMessage(it.key(), names, "field", ""));
         }
     }
 }
 
-template <typename S, std::size_t N> std::vector<const char*> Keys(const std::array<Field<S>, N>& fields)
+// The fields of one object of struct S: its unknown keys, then every field in table order, nested objects
+// last (so problems are listed as the reader has always listed them).
+template <typename S>
+void ReadObject(const ObjectReader& reader, const Json& object, std::span<const Field<S>> fields, S& out)
 {
-    std::vector<const char*> keys;
+    std::vector<std::string_view> known;
     for (const Field<S>& field : fields)
     {
-        keys.push_back(field.key);
+        if (!IsNested(field))
+        {
+            known.push_back(field.name);
+        }
     }
-    return keys;
+    for (const Field<S>& field : fields)
+    {
+        if (IsNested(field))
+        {
+            known.push_back(field.name);
+        }
+    }
+    CheckKnownKeys(object, reader.Path(), known, reader.Diagnostics());
+    for (const Field<S>& field : fields)
+    {
+        ReadField(reader, field, out);
+    }
+    for (const Field<S>& field : fields)
+    {
+        if (auto member = std::get_if<IntensityModel S::*>(&field.member))
+        {
+            if (const Json* nested = reader.Object(field.name))
+            {
+                ReadObject(ObjectReader(*nested, reader.FieldPath(field.name), reader.Diagnostics()), *nested,
+                           IntensityFields(), out.**member);
+            }
+        }
+    }
 }
 
 // Calls `each(reader, index)` for every object of an array field.
@@ -269,9 +203,12 @@ template <typename F> void ForEachObject(const ObjectReader& parent, const char*
         {
             parent.Diagnostics().Add(path,
                                      "expected an object, found " + scene_detail::Describe((*array)[i]));
-            continue;
         }
-        each(ObjectReader((*array)[i], path, parent.Diagnostics()), (*array)[i]);
+        // A bad element is read as an empty object (defaults) so that the following elements keep their
+        // indices for Validate's paths; what Validate says about it is covered by the error above.
+        static const Json kEmpty = Json::object();
+        const Json& element = (*array)[i].is_object() ? (*array)[i] : kEmpty;
+        each(ObjectReader(element, path, parent.Diagnostics()), element);
     }
 }
 
@@ -283,80 +220,56 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         diagnostics.Add("", "expected an object at the top level, found " + scene_detail::Describe(root));
         return config;
     }
+    const std::string sceneKeys = scene_detail::RubeSceneKeys(root);
+    if (!sceneKeys.empty() && scene_detail::EffectsConfigKeys(root).empty())
+    {
+        diagnostics.Add("", "expected an effects config, found a RUBE scene (top-level " + sceneKeys +
+                                "; an effects config has \"materials\", \"particleTypes\", \"rules\"): load "
+                                "it as a scene (contactfx: run SCENE.json)");
+        return config;
+    }
     ObjectReader top(root, "", diagnostics);
-    static constexpr const char* kTopKeys[] = {"name",  "materials", "particleTypes",
-                                               "rules", "budget",    "assignments"};
-    CheckKnownKeys(root, "", {}, kTopKeys, diagnostics);
+    static constexpr std::string_view kTopKeys[] = {"name",  "materials", "particleTypes",
+                                                    "rules", "budget",    "assignments"};
+    CheckKnownKeys(root, "", kTopKeys, diagnostics);
     config.name = top.String("name");
 
     if (const Json* materials = top.Array("materials"))
     {
         for (std::size_t i = 0; i < materials->size(); ++i)
         {
-            if (auto name = scene_detail::ReadString((*materials)[i], scene_detail::IndexPath("materials", i),
-                                                     diagnostics))
-            {
-                config.materials.push_back(*name);
-            }
+            // A bad name keeps its place (as "") so that the indices of the following names stay right.
+            config.materials.push_back(scene_detail::ReadString((*materials)[i],
+                                                                scene_detail::IndexPath("materials", i),
+                                                                diagnostics)
+                                           .value_or(std::string()));
         }
     }
 
-    const std::vector<const char*> particleKeys = Keys(kParticleFields);
     ForEachObject(top, "particleTypes",
                   [&](const ObjectReader& reader, const Json& object)
                   {
                       ParticleTypeDef type;
-                      CheckKnownKeys(object, reader.Path(), {"backend"}, particleKeys, diagnostics);
-                      ReadFields(reader, kParticleFields, type);
-                      ReadEnum(reader, "backend", kBackends, type.backend);
+                      ReadObject(reader, object, ParticleTypeFields(), type);
                       config.particleTypes.push_back(type);
                   });
-
-    const std::vector<const char*> ruleKeys = Keys(kRuleFields);
-    const std::vector<const char*> intensityKeys = Keys(kIntensityFields);
     ForEachObject(top, "rules",
                   [&](const ObjectReader& reader, const Json& object)
                   {
                       RuleDef rule;
-                      CheckKnownKeys(object, reader.Path(), {"intensity", "emission", "placement"}, ruleKeys,
-                                     diagnostics);
-                      ReadFields(reader, kRuleFields, rule);
-                      ReadEnum(reader, "emission", kEmissionModes, rule.emission);
-                      ReadEnum(reader, "placement", kPlacements, rule.placement);
-                      if (const Json* intensity = reader.Object("intensity"))
-                      {
-                          ObjectReader model(*intensity, reader.FieldPath("intensity"), diagnostics);
-                          CheckKnownKeys(*intensity, model.Path(), {"speed", "friction", "points"},
-                                         intensityKeys, diagnostics);
-                          ReadFields(model, kIntensityFields, rule.intensity);
-                          ReadEnum(model, "speed", kSpeedModes, rule.intensity.speed);
-                          ReadEnum(model, "friction", kFrictionMixes, rule.intensity.friction);
-                          ReadEnum(model, "points", kManifoldPoints, rule.intensity.points);
-                      }
+                      ReadObject(reader, object, RuleFields(), rule);
                       config.rules.push_back(rule);
                   });
-
-    const std::vector<const char*> assignmentKeys = Keys(kAssignmentFields);
     ForEachObject(top, "assignments",
                   [&](const ObjectReader& reader, const Json& object)
                   {
                       MaterialAssignment assignment;
-                      CheckKnownKeys(object, reader.Path(), {"bodyType"}, assignmentKeys, diagnostics);
-                      ReadFields(reader, kAssignmentFields, assignment);
-                      ReadEnum(reader, "bodyType", kBodyTypeFilters, assignment.bodyType);
+                      ReadObject(reader, object, AssignmentFields(), assignment);
                       config.assignments.push_back(assignment);
                   });
-
     if (const Json* budget = top.Object("budget"))
     {
-        ObjectReader reader(*budget, "budget", diagnostics);
-        static constexpr const char* kBudgetKeys[] = {"capacity", "recycle", "contacts"};
-        CheckKnownKeys(*budget, "budget", {}, kBudgetKeys, diagnostics);
-        config.budget.capacity = static_cast<std::uint32_t>(
-            reader.Int("capacity", static_cast<int>(config.budget.capacity), 0, 1 << 30));
-        ReadEnum(reader, "recycle", kRecyclePolicies, config.budget.recycle);
-        config.budget.contacts = static_cast<std::uint32_t>(
-            reader.Int("contacts", static_cast<int>(config.budget.contacts), 0, 1 << 30));
+        ReadObject(ObjectReader(*budget, "budget", diagnostics), *budget, BudgetFields(), config.budget);
     }
     return config;
 }
@@ -368,9 +281,27 @@ std::vector<Diagnostic> Parse(std::string_view text, std::string_view fileName, 
     if (root)
     {
         config = ReadConfig(*root, diagnostics);
-        if (diagnostics.Empty())
+        // Ranges and cross-references in the same pass, except where reading already failed: a field that
+        // did not read keeps its (valid) default, and what Validate would add about a bad element or name
+        // is that same problem again.
+        const std::vector<Diagnostic> readProblems = diagnostics.Items();
+        auto covered = [&](const std::string& path)
         {
-            for (Diagnostic& problem : Validate(config, fileName))
+            for (const Diagnostic& problem : readProblems)
+            {
+                const std::string& at = problem.path;
+                if (at.empty() ||
+                    (path.compare(0, at.size(), at) == 0 &&
+                     (path.size() == at.size() || path[at.size()] == '.' || path[at.size()] == '[')))
+                {
+                    return true;
+                }
+            }
+            return false;
+        };
+        for (Diagnostic& problem : Validate(config, fileName))
+        {
+            if (!covered(problem.path))
             {
                 diagnostics.Add(std::move(problem.path), std::move(problem.message));
             }
@@ -379,40 +310,52 @@ std::vector<Diagnostic> Parse(std::string_view text, std::string_view fileName, 
     return diagnostics.Take();
 }
 
-template <typename S, std::size_t N>
-void WriteFields(Json& out, const std::array<Field<S>, N>& fields, const S& in)
+template <typename S> Json WriteObject(std::span<const Field<S>> fields, const S& in)
 {
+    Json out = Json::object();
     for (const Field<S>& field : fields)
     {
+        const std::string key(field.name);
         std::visit(
             [&](auto member)
             {
-                using T = std::remove_cvref_t<decltype(in.*member)>;
-                if constexpr (std::is_same_v<T, float>)
+                using M = decltype(member);
+                if constexpr (std::is_same_v<M, float S::*>)
                 {
-                    out[field.key] = scene_detail::ExactFloat(in.*member);
+                    out[key] = scene_detail::ExactFloat(in.*member);
                 }
-                else if constexpr (std::is_same_v<T, std::optional<float>>)
+                else if constexpr (std::is_same_v<M, std::optional<float> S::*>)
                 {
-                    if (in.*member)
+                    if (in.*member) // written only when set
                     {
-                        out[field.key] = scene_detail::ExactFloat(*(in.*member));
+                        out[key] = scene_detail::ExactFloat(*(in.*member));
                     }
                 }
-                else if constexpr (std::is_same_v<T, Color>)
+                else if constexpr (std::is_same_v<M, Color S::*>)
                 {
                     const Color& c = in.*member;
-                    out[field.key] =
-                        Json::array({scene_detail::ExactFloat(c.r), scene_detail::ExactFloat(c.g),
-                                     scene_detail::ExactFloat(c.b), scene_detail::ExactFloat(c.a)});
+                    out[key] = Json::array({scene_detail::ExactFloat(c.r), scene_detail::ExactFloat(c.g),
+                                            scene_detail::ExactFloat(c.b), scene_detail::ExactFloat(c.a)});
+                }
+                else if constexpr (std::is_same_v<M, ChoiceMember<S>>)
+                {
+                    const int index = member.get(in);
+                    out[key] = index >= 0 && static_cast<std::size_t>(index) < field.choices.size()
+                                   ? std::string(field.choices[static_cast<std::size_t>(index)])
+                                   : std::string("?");
+                }
+                else if constexpr (std::is_same_v<M, IntensityModel S::*>)
+                {
+                    out[key] = WriteObject(IntensityFields(), in.*member);
                 }
                 else
                 {
-                    out[field.key] = in.*member;
+                    out[key] = in.*member;
                 }
             },
             field.member);
     }
+    return out;
 }
 
 } // namespace
@@ -454,37 +397,19 @@ std::string SaveEffectsString(const EffectsConfig& config)
     root["particleTypes"] = Json::array();
     for (const ParticleTypeDef& type : config.particleTypes)
     {
-        Json out = Json::object();
-        WriteFields(out, kParticleFields, type);
-        out["backend"] = NameOf(kBackends, type.backend);
-        root["particleTypes"].push_back(out);
+        root["particleTypes"].push_back(WriteObject(ParticleTypeFields(), type));
     }
     root["rules"] = Json::array();
     for (const RuleDef& rule : config.rules)
     {
-        Json out = Json::object();
-        WriteFields(out, kRuleFields, rule);
-        out["emission"] = NameOf(kEmissionModes, rule.emission);
-        out["placement"] = NameOf(kPlacements, rule.placement);
-        Json intensity = Json::object();
-        intensity["speed"] = NameOf(kSpeedModes, rule.intensity.speed);
-        intensity["friction"] = NameOf(kFrictionMixes, rule.intensity.friction);
-        intensity["points"] = NameOf(kManifoldPoints, rule.intensity.points);
-        WriteFields(intensity, kIntensityFields, rule.intensity);
-        out["intensity"] = intensity;
-        root["rules"].push_back(out);
+        root["rules"].push_back(WriteObject(RuleFields(), rule));
     }
     root["assignments"] = Json::array();
     for (const MaterialAssignment& assignment : config.assignments)
     {
-        Json out = Json::object();
-        WriteFields(out, kAssignmentFields, assignment);
-        out["bodyType"] = NameOf(kBodyTypeFilters, assignment.bodyType);
-        root["assignments"].push_back(out);
+        root["assignments"].push_back(WriteObject(AssignmentFields(), assignment));
     }
-    root["budget"] = Json{{"capacity", config.budget.capacity},
-                          {"recycle", NameOf(kRecyclePolicies, config.budget.recycle)},
-                          {"contacts", config.budget.contacts}};
+    root["budget"] = WriteObject(BudgetFields(), config.budget);
     return root.dump(2) + "\n";
 }
 

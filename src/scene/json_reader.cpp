@@ -81,25 +81,27 @@ std::string Missing(std::string_view expected)
 
 DiagnosticList::DiagnosticList(std::string file) : m_file(std::move(file)) {}
 
-void DiagnosticList::Push(Diagnostic diagnostic)
+void DiagnosticList::Push(std::vector<Diagnostic>& items, bool& truncated, Diagnostic diagnostic)
 {
-    if (m_truncated)
+    if (truncated)
     {
         return;
     }
-    if (m_items.size() + 1 >= kLimit)
+    if (items.size() + 1 >= kLimit)
     {
-        m_truncated = true;
-        m_items.push_back(Diagnostic{
-            m_file, "", "too many problems: stopped reporting after " + std::to_string(kLimit - 1)});
+        truncated = true;
+        Diagnostic last{diagnostic.file, "",
+                        "too many problems: stopped reporting after " + std::to_string(kLimit - 1)};
+        last.warning = diagnostic.warning;
+        items.push_back(std::move(last));
         return;
     }
-    m_items.push_back(std::move(diagnostic));
+    items.push_back(std::move(diagnostic));
 }
 
 void DiagnosticList::Add(std::string path, std::string message)
 {
-    Push(Diagnostic{m_file, std::move(path), std::move(message)});
+    Push(m_items, m_truncated, Diagnostic{m_file, std::move(path), std::move(message)});
 }
 
 void DiagnosticList::AddAt(int line, int column, std::string message)
@@ -107,13 +109,26 @@ void DiagnosticList::AddAt(int line, int column, std::string message)
     Diagnostic diagnostic{m_file, "", std::move(message)};
     diagnostic.line = line;
     diagnostic.column = column;
-    Push(std::move(diagnostic));
+    Push(m_items, m_truncated, std::move(diagnostic));
+}
+
+void DiagnosticList::Warn(std::string path, std::string message)
+{
+    Diagnostic diagnostic{m_file, std::move(path), std::move(message)};
+    diagnostic.warning = true;
+    Push(m_warnings, m_warningsTruncated, std::move(diagnostic));
 }
 
 std::vector<Diagnostic> DiagnosticList::Take()
 {
     m_truncated = false;
     return std::exchange(m_items, {});
+}
+
+std::vector<Diagnostic> DiagnosticList::TakeWarnings()
+{
+    m_warningsTruncated = false;
+    return std::exchange(m_warnings, {});
 }
 
 std::string JoinPath(std::string_view base, std::string_view key)

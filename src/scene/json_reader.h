@@ -22,8 +22,9 @@ namespace cfx::scene_detail
 
 using Json = nlohmann::json;
 
-/// The diagnostics of one input. Stops recording (with a last note) after kLimit entries so that a hostile
-/// file cannot make the list grow without bound.
+/// The diagnostics of one input: errors, and apart from them warnings (Diagnostic::warning). Each list stops
+/// recording (with a last note) after kLimit entries so that a hostile file cannot make it grow without
+/// bound. Empty() and Size() count errors only.
 class DiagnosticList
 {
 public:
@@ -33,19 +34,25 @@ public:
 
     void Add(std::string path, std::string message);
     void AddAt(int line, int column, std::string message);
+    /// A warning: the input still loads.
+    void Warn(std::string path, std::string message);
 
     bool Empty() const { return m_items.empty(); }
     std::size_t Size() const { return m_items.size(); }
     const std::string& File() const { return m_file; }
     const std::vector<Diagnostic>& Items() const { return m_items; }
+    const std::vector<Diagnostic>& Warnings() const { return m_warnings; }
     std::vector<Diagnostic> Take();
+    std::vector<Diagnostic> TakeWarnings();
 
 private:
-    void Push(Diagnostic diagnostic);
+    static void Push(std::vector<Diagnostic>& items, bool& truncated, Diagnostic diagnostic);
 
     std::string m_file;
     std::vector<Diagnostic> m_items;
+    std::vector<Diagnostic> m_warnings;
     bool m_truncated = false;
+    bool m_warningsTruncated = false;
 };
 
 /// Allowed interval of a number read from the file. Every number must also be finite.

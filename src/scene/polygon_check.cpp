@@ -3,6 +3,7 @@
 #include <box2d/b2_common.h>
 #include <box2d/b2_settings.h>
 #include <cmath>
+#include <cstdio>
 
 namespace cfx::scene_detail
 {
@@ -10,153 +11,225 @@ namespace cfx::scene_detail
 namespace
 {
 
-// Margins over Box2D's own thresholds, so that rounding can never turn an accepted shape into an assert.
+// Margin over Box2D's chain and edge thresholds, so that rounding can never turn an accepted shape into an
+// assert. Polygons need none: CheckPolygon computes what Set computes.
 constexpr float kDistanceMargin = 1.001f;
-constexpr float kCollinearTolerance = 1.0e-5f; // |sin| of the angle between two edges from one vertex
-constexpr float kMinArea = 4.0f * b2_epsilon;  // Box2D asserts area > b2_epsilon
+// Set welds a vertex closer than this (squared) to a vertex kept before it.
+constexpr float kWeldDistanceSquared = (0.5f * b2_linearSlop) * (0.5f * b2_linearSlop);
 
 std::string Index(int i)
 {
     return std::to_string(i);
 }
 
-/// Box2D's gift wrapping (b2PolygonShape::Set) on vertices that need no welding, bounded so that it stops
-/// instead of overrunning. The number of hull vertices, or -1 when the walk does not close.
-int GiftWrap(std::span<const b2Vec2> ps, int* hull)
+std::string Number(float value)
 {
-    const int n = static_cast<int>(ps.size());
-    int i0 = 0;
-    float x0 = ps[0].x;
-    for (int i = 1; i < n; ++i)
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(value));
+    return buffer;
+}
+
+/// The convex hull walk of b2PolygonShape::Set over `points`: start at the right-most point (lowest of
+/// equals), then repeatedly take the point with every other point on its left (the farthest of exactly
+/// collinear ones). Box2D asserts when a walk reaches b2_maxPolygonVertices points without coming back to
+/// the start; so does this (-1). Otherwise the number of hull points, their indices in `hull`.
+int WrapHull(std::span<const b2Vec2> points, int (&hull)[b2_maxPolygonVertices])
+{
+    const int count = static_cast<int>(points.size());
+    auto at = [&](int i) { return points[static_cast<std::size_t>(i)]; };
+    int start = 0;
+    for (int i = 1; i < count; ++i)
     {
-        const float x = ps[static_cast<std::size_t>(i)].x;
-        if (x > x0 || (x == x0 && ps[static_cast<std::size_t>(i)].y < ps[static_cast<std::size_t>(i0)].y))
+        if (at(i).x > at(start).x || (at(i).x == at(start).x && at(i).y < at(start).y))
         {
-            i0 = i;
-            x0 = x;
+            start = i;
         }
     }
-    int m = 0;
-    int ih = i0;
-    for (;;)
+    int size = 0;
+    int current = start;
+    while (true)
     {
-        if (m >= n)
+        if (size >= b2_maxPolygonVertices)
         {
             return -1;
         }
-        hull[m] = ih;
-        const b2Vec2 current = ps[static_cast<std::size_t>(ih)];
-        int ie = 0;
-        for (int j = 1; j < n; ++j)
+        hull[size] = current;
+        int next = 0;
+        for (int candidate = 1; candidate < count; ++candidate)
         {
-            if (ie == ih)
+            if (next == current)
             {
-                ie = j;
+                next = candidate;
                 continue;
             }
-            const b2Vec2 r = ps[static_cast<std::size_t>(ie)] - current;
-            const b2Vec2 v = ps[static_cast<std::size_t>(j)] - current;
-            const float c = b2Cross(r, v);
-            if (c < 0.0f)
+            const b2Vec2 toNext = at(next) - at(current);
+            const b2Vec2 toCandidate = at(candidate) - at(current);
+            const float turn = b2Cross(toNext, toCandidate);
+            if (turn < 0.0f || (turn == 0.0f && toCandidate.LengthSquared() > toNext.LengthSquared()))
             {
-                ie = j;
-            }
-            if (c == 0.0f && v.LengthSquared() > r.LengthSquared())
-            {
-                ie = j;
+                next = candidate;
             }
         }
-        ++m;
-        ih = ie;
-        if (ie == i0)
+        ++size;
+        current = next;
+        if (current == start)
         {
-            break;
+            return size;
         }
     }
-    return m;
+}
+
+/// The area as ComputeCentroid sums it (triangles fanned from the first vertex).
+float FanArea(std::span<const b2Vec2> polygon)
+{
+    const std::size_t count = polygon.size();
+    const b2Vec2 origin = polygon[0];
+    float area = 0.0f;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const b2Vec2 first = polygon[0] - origin;
+        const b2Vec2 second = polygon[i] - origin;
+        const b2Vec2 third = (i + 1 < count ? polygon[i + 1] : polygon[0]) - origin;
+        area += 0.5f * b2Cross(second - first, third - first);
+    }
+    return area;
 }
 
 } // namespace
 
-std::optional<std::string> CheckPolygon(std::span<const b2Vec2> vertices)
+PolygonCheck CheckPolygon(std::span<const b2Vec2> vertices)
 {
+    PolygonCheck result;
     const int n = static_cast<int>(vertices.size());
     if (n < 3)
     {
-        return "a polygon needs 3 to " + Index(b2_maxPolygonVertices) + " vertices (2 make an edge), found " +
-               Index(n);
+        result.error = "a polygon needs 3 to " + Index(b2_maxPolygonVertices) +
+                       " vertices (2 make an edge), found " + Index(n);
+        return result;
     }
     if (n > b2_maxPolygonVertices)
     {
-        return "a polygon has at most " + Index(b2_maxPolygonVertices) +
-               " vertices (b2_maxPolygonVertices), found " + Index(n);
+        result.error = "a polygon has at most " + Index(b2_maxPolygonVertices) +
+                       " vertices (b2_maxPolygonVertices), found " + Index(n);
+        return result;
     }
-    const float weld = (0.5f * b2_linearSlop) * (0.5f * b2_linearSlop) * kDistanceMargin;
+
+    // Welding: a vertex within b2_linearSlop/2 of one kept before it is dropped.
+    std::vector<std::string> dropped(static_cast<std::size_t>(n));
+    b2Vec2 kept[b2_maxPolygonVertices];
+    int keptIndex[b2_maxPolygonVertices] = {};
+    int keptCount = 0;
     for (int i = 0; i < n; ++i)
     {
-        for (int j = i + 1; j < n; ++j)
+        const b2Vec2 vertex = vertices[static_cast<std::size_t>(i)];
+        int weldedTo = -1;
+        for (int k = 0; k < keptCount && weldedTo < 0; ++k)
         {
-            if (b2DistanceSquared(vertices[static_cast<std::size_t>(i)],
-                                  vertices[static_cast<std::size_t>(j)]) < weld)
+            if (b2DistanceSquared(vertex, kept[k]) < kWeldDistanceSquared)
             {
-                return "vertices " + Index(i) + " and " + Index(j) +
-                       " are closer than b2_linearSlop/2 (0.0025): Box2D would merge them";
+                weldedTo = keptIndex[k];
             }
         }
+        if (weldedTo >= 0)
+        {
+            dropped[static_cast<std::size_t>(i)] =
+                "vertex " + Index(i) + " is closer than b2_linearSlop/2 (0.0025) to vertex " +
+                Index(weldedTo) + ": Box2D welds them and drops vertex " + Index(i);
+            continue;
+        }
+        kept[keptCount] = vertex;
+        keptIndex[keptCount] = i;
+        ++keptCount;
     }
-    for (int i = 0; i < n; ++i)
+    if (keptCount < 3)
     {
-        for (int j = i + 1; j < n; ++j)
-        {
-            for (int k = j + 1; k < n; ++k)
-            {
-                const b2Vec2 a = vertices[static_cast<std::size_t>(i)];
-                const b2Vec2 e1 = vertices[static_cast<std::size_t>(j)] - a;
-                const b2Vec2 e2 = vertices[static_cast<std::size_t>(k)] - a;
-                if (std::fabs(b2Cross(e1, e2)) <= kCollinearTolerance * e1.Length() * e2.Length())
-                {
-                    return "vertices " + Index(i) + ", " + Index(j) + " and " + Index(k) +
-                           " are collinear (degenerate polygon)";
-                }
-            }
-        }
+        result.error = "only " + Index(keptCount) +
+                       " vertices are left after welding those closer than b2_linearSlop/2 (0.0025): "
+                       "degenerate polygon (Box2D asserts)";
+        return result;
     }
+
     int hull[b2_maxPolygonVertices] = {};
-    const int hullCount = GiftWrap(vertices, hull);
+    const std::span<const b2Vec2> points(kept, static_cast<std::size_t>(keptCount));
+    const int hullCount = WrapHull(points, hull);
     if (hullCount < 0)
     {
-        return "not convex";
+        result.error = "the convex hull of the vertices does not close (degenerate polygon, Box2D asserts)";
+        return result;
     }
-    if (hullCount != n)
+    if (hullCount < 3)
     {
-        bool onHull[b2_maxPolygonVertices] = {};
-        for (int i = 0; i < hullCount; ++i)
+        result.error = "the vertices are collinear: the convex hull has " + Index(hullCount) +
+                       " corners (degenerate polygon, Box2D asserts)";
+        return result;
+    }
+    b2Vec2 polygon[b2_maxPolygonVertices];
+    for (int i = 0; i < hullCount; ++i)
+    {
+        polygon[i] = kept[hull[i]];
+    }
+    const std::span<const b2Vec2> corners(polygon, static_cast<std::size_t>(hullCount));
+    for (int i = 0; i < hullCount; ++i)
+    {
+        const int next = i + 1 < hullCount ? i + 1 : 0;
+        if (!((polygon[next] - polygon[i]).LengthSquared() > b2_epsilon * b2_epsilon))
         {
-            onHull[hull[i]] = true;
+            result.error = "the hull edge from vertex " + Index(keptIndex[hull[i]]) + " to vertex " +
+                           Index(keptIndex[hull[next]]) +
+                           " has zero length (degenerate polygon, Box2D asserts)";
+            return result;
         }
-        for (int i = 0; i < n; ++i)
+    }
+    const float area = FanArea(corners);
+    if (!(area > b2_epsilon))
+    {
+        result.error = "area " + Number(area) + " m^2 is not above b2_epsilon (" + Number(b2_epsilon) +
+                       "): degenerate polygon (Box2D asserts)";
+        return result;
+    }
+    // b2PolygonShape::Validate: every corner on the inner side of every edge it is not on.
+    for (int i = 0; i < hullCount; ++i)
+    {
+        const int next = i + 1 < hullCount ? i + 1 : 0;
+        const b2Vec2 edge = polygon[next] - polygon[i];
+        for (int j = 0; j < hullCount; ++j)
         {
-            if (!onHull[i])
+            if (j != i && j != next && b2Cross(edge, polygon[j] - polygon[i]) < 0.0f)
             {
-                return "not convex: vertex " + Index(i) + " lies inside the convex hull of the others";
+                result.error = "vertex " + Index(keptIndex[hull[j]]) +
+                               " lies outside the hull edge from vertex " + Index(keptIndex[hull[i]]) +
+                               " to vertex " + Index(keptIndex[hull[next]]) +
+                               " in float arithmetic (b2PolygonShape::Validate fails: degenerate polygon)";
+                return result;
             }
         }
-        return "not convex";
     }
-    // Area as b2PolygonShape computes it for the centroid and the mass, on the hull in Box2D's order.
-    float area = 0.0f;
-    const b2Vec2 s = vertices[static_cast<std::size_t>(hull[0])];
-    for (int i = 0; i < n; ++i)
+
+    bool onHull[b2_maxPolygonVertices] = {};
+    for (int i = 0; i < hullCount; ++i)
     {
-        const b2Vec2 e1 = vertices[static_cast<std::size_t>(hull[i])] - s;
-        const b2Vec2 e2 = vertices[static_cast<std::size_t>(hull[i + 1 < n ? i + 1 : 0])] - s;
-        area += 0.5f * b2Cross(e1, e2);
+        onHull[hull[i]] = true;
     }
-    if (!(area > kMinArea))
+    for (int k = 0; k < keptCount; ++k)
     {
-        return "area " + std::to_string(area) + " is too small (degenerate polygon)";
+        if (!onHull[k])
+        {
+            const int i = keptIndex[k];
+            dropped[static_cast<std::size_t>(i)] =
+                "vertex " + Index(i) +
+                " is not a corner of the convex hull (inside it, or on an edge between two corners): Box2D "
+                "drops it";
+        }
     }
-    return std::nullopt;
+    for (std::string& message : dropped)
+    {
+        if (!message.empty())
+        {
+            result.dropped.push_back(std::move(message));
+        }
+    }
+    result.kept = hullCount;
+    return result;
 }
 
 std::optional<std::string> CheckEdge(b2Vec2 vertex1, b2Vec2 vertex2)

@@ -23,6 +23,7 @@ struct LoadOutcome
     std::optional<Scene> scene;
     SceneCounts counts;
     std::vector<Diagnostic> diagnostics;
+    std::vector<Diagnostic> warnings;
 };
 
 LoadOutcome Load(std::string_view text, const std::string& fileName)
@@ -41,10 +42,12 @@ LoadOutcome Load(std::string_view text, const std::string& fileName)
             if (diagnostics.Empty())
             {
                 outcome.scene = std::move(scene);
+                outcome.scene->warnings = diagnostics.Warnings();
             }
         }
     }
     outcome.diagnostics = diagnostics.Take();
+    outcome.warnings = diagnostics.TakeWarnings();
     return outcome;
 }
 
@@ -86,18 +89,27 @@ Scene LoadRubeFile(const std::filesystem::path& path)
 }
 
 std::vector<Diagnostic> ValidateRubeString(std::string_view json, std::string_view fileName,
-                                           SceneCounts* counts)
+                                           SceneCounts* counts, std::vector<Diagnostic>* warnings)
 {
     LoadOutcome outcome = Load(json, std::string(fileName));
     if (counts != nullptr)
     {
         *counts = outcome.counts;
     }
+    if (warnings != nullptr)
+    {
+        *warnings = std::move(outcome.warnings);
+    }
     return std::move(outcome.diagnostics);
 }
 
-std::vector<Diagnostic> ValidateRubeFile(const std::filesystem::path& path, SceneCounts* counts)
+std::vector<Diagnostic> ValidateRubeFile(const std::filesystem::path& path, SceneCounts* counts,
+                                         std::vector<Diagnostic>* warnings)
 {
+    if (warnings != nullptr)
+    {
+        warnings->clear();
+    }
     std::vector<Diagnostic> diagnostics;
     std::optional<std::string> text = ReadFile(path, diagnostics);
     if (!text)
@@ -108,7 +120,7 @@ std::vector<Diagnostic> ValidateRubeFile(const std::filesystem::path& path, Scen
         }
         return diagnostics;
     }
-    return ValidateRubeString(*text, path.string(), counts);
+    return ValidateRubeString(*text, path.string(), counts, warnings);
 }
 
 } // namespace cfx

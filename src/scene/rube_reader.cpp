@@ -1,7 +1,10 @@
 #include "scene/rube_reader.h"
 
 #include "scene/custom_properties_json.h"
+#include "scene/known_keys.h"
 #include "scene/polygon_check.h"
+#include "scene/rube_joints.h"
+#include "scene/rube_limits.h"
 
 #include <array>
 #include <cmath>
@@ -13,30 +16,6 @@ namespace cfx::scene_detail
 
 namespace
 {
-
-constexpr NumberLimits kStepRate{0.0, 1.0e6, true};
-constexpr NumberLimits kUnit{0.0, 1.0, false};
-constexpr int kMaxIterations = 10000;
-
-struct JointTypeName
-{
-    std::string_view name;
-    JointKind kind;
-};
-
-constexpr std::array<JointTypeName, 11> kJointTypes = {{
-    {"revolute", JointKind::revolute},
-    {"prismatic", JointKind::prismatic},
-    {"distance", JointKind::distance},
-    {"pulley", JointKind::pulley},
-    {"mouse", JointKind::mouse},
-    {"gear", JointKind::gear},
-    {"wheel", JointKind::wheel},
-    {"weld", JointKind::weld},
-    {"friction", JointKind::friction},
-    {"motor", JointKind::motor},
-    {"rope", JointKind::rope},
-}};
 
 bool IsObjectElement(const Json& value, const std::string& path, DiagnosticList& diagnostics)
 {
@@ -123,10 +102,14 @@ bool ReadPolygon(const ObjectReader& polygon, ShapeModel& shape)
         return !problem;
     }
     shape.kind = ShapeModel::Kind::polygon;
-    auto problem = CheckPolygon(*vertices);
-    ReportShape(polygon, "vertices", problem);
+    PolygonCheck check = CheckPolygon(*vertices);
+    ReportShape(polygon, "vertices", check.error);
+    for (std::string& message : check.dropped)
+    {
+        polygon.Diagnostics().Warn(polygon.FieldPath("vertices"), std::move(message));
+    }
     shape.vertices = std::move(*vertices);
-    return !problem;
+    return !check.error;
 }
 
 bool ReadEdge(const ObjectReader& edge, ShapeModel& shape)
@@ -282,9 +265,9 @@ FixtureModel ReadFixture(const ObjectReader& reader)
     FixtureModel fixture;
     fixture.name = reader.String("name");
     // RUBE leaves out zeros: a missing friction, restitution or density is 0, not Box2D's default.
-    fixture.friction = reader.Float("friction", 0.0f, kNonNegative);
-    fixture.restitution = reader.Float("restitution", 0.0f, kNonNegative);
-    fixture.density = reader.Float("density", 0.0f, kNonNegative);
+    fixture.friction = reader.Float("friction", 0.0f, kFriction);
+    fixture.restitution = reader.Float("restitution", 0.0f, kRestitution);
+    fixture.density = reader.Float("density", 0.0f, kDensity);
     fixture.sensor = reader.Bool("sensor", false);
     fixture.categoryBits = static_cast<std::uint16_t>(reader.Int("filter-categoryBits", 0x0001, 0, 0xFFFF));
     fixture.maskBits = static_cast<std::uint16_t>(reader.Int("filter-maskBits", 0xFFFF, 0, 0xFFFF));
@@ -302,11 +285,11 @@ BodyModel ReadBody(const ObjectReader& reader, SceneCounts& counts)
     body.type = static_cast<b2BodyType>(reader.Int("type", 0, 0, 2));
     body.position = reader.Vec("position", b2Vec2(0.0f, 0.0f), kCoordinate);
     body.angle = reader.Float("angle", 0.0f, kCoordinate);
-    body.linearVelocity = reader.Vec("linearVelocity", b2Vec2(0.0f, 0.0f), kCoordinate);
-    body.angularVelocity = reader.Float("angularVelocity", 0.0f, kCoordinate);
-    body.linearDamping = reader.Float("linearDamping", 0.0f, kNonNegative);
-    body.angularDamping = reader.Float("angularDamping", 0.0f, kNonNegative);
-    body.gravityScale = reader.Float("gravityScale", 1.0f, kCoordinate);
+    body.linearVelocity = reader.Vec("linearVelocity", b2Vec2(0.0f, 0.0f), kSpeed);
+    body.angularVelocity = reader.Float("angularVelocity", 0.0f, kSpeed);
+    body.linearDamping = reader.Float("linearDamping", 0.0f, kDamping);
+    body.angularDamping = reader.Float("angularDamping", 0.0f, kDamping);
+    body.gravityScale = reader.Float("gravityScale", 1.0f, kGravityScale);
     body.bullet = reader.Bool("bullet", false);
     body.allowSleep = reader.Bool("allowSleep", true);
     body.awake = reader.Bool("awake", false);
@@ -315,9 +298,9 @@ BodyModel ReadBody(const ObjectReader& reader, SceneCounts& counts)
     if (reader.Has("massData-mass") || reader.Has("massData-center") || reader.Has("massData-I"))
     {
         b2MassData massData;
-        massData.mass = reader.Float("massData-mass", 0.0f, kNonNegative);
+        massData.mass = reader.Float("massData-mass", 0.0f, kMass);
         massData.center = reader.Vec("massData-center", b2Vec2(0.0f, 0.0f), kCoordinate);
-        massData.I = reader.Float("massData-I", 0.0f, kNonNegative);
+        massData.I = reader.Float("massData-I", 0.0f, kInertia);
         body.massData = massData;
     }
     if (const Json* fixtures = reader.Array("fixture"))
@@ -366,124 +349,6 @@ std::optional<int> ReadIndex(const ObjectReader& reader, std::string_view key, i
     return static_cast<int>(*index);
 }
 
-void ReadLimits(const ObjectReader& reader, JointModel& joint, const NumberLimits& limits)
-{
-    joint.enableLimit = reader.Bool("enableLimit", false);
-    auto lower = reader.OptionalFloat("lowerLimit", limits);
-    auto upper = reader.OptionalFloat("upperLimit", limits);
-    joint.lowerLimit = lower.value_or(0.0f);
-    joint.upperLimit = upper.value_or(0.0f);
-    if (joint.lowerLimit > joint.upperLimit)
-    {
-        reader.Diagnostics().Add(reader.FieldPath("upperLimit"),
-                                 "expected upperLimit >= lowerLimit (" + FormatFloat(joint.lowerLimit) +
-                                     "), found " + FormatFloat(joint.upperLimit));
-    }
-}
-
-void ReadAxis(const ObjectReader& reader, std::string_view key, JointModel& joint)
-{
-    joint.localAxisA = reader.Vec(key, b2Vec2(1.0f, 0.0f), kCoordinate);
-    if (joint.localAxisA.Length() < b2_epsilon)
-    {
-        reader.Diagnostics().Add(reader.FieldPath(key), "expected a non-zero axis, found (0, 0)");
-        joint.localAxisA.Set(1.0f, 0.0f);
-    }
-}
-
-void ReadSpring(const ObjectReader& reader, JointModel& joint, std::string_view frequencyKey,
-                std::string_view dampingKey)
-{
-    joint.frequency = reader.Float(frequencyKey, 0.0f, kNonNegative);
-    joint.dampingRatio = reader.Float(dampingKey, 0.0f, kNonNegative);
-}
-
-void ReadJointFields(const ObjectReader& reader, JointModel& joint)
-{
-    joint.anchorA = reader.Vec("anchorA", b2Vec2(0.0f, 0.0f), kCoordinate);
-    joint.anchorB = reader.Vec("anchorB", b2Vec2(0.0f, 0.0f), kCoordinate);
-    switch (joint.kind)
-    {
-    case JointKind::revolute:
-        joint.referenceAngle = reader.Float("refAngle", 0.0f, kCoordinate);
-        ReadLimits(reader, joint, kCoordinate);
-        joint.enableMotor = reader.Bool("enableMotor", false);
-        joint.motorSpeed = reader.Float("motorSpeed", 0.0f, kCoordinate);
-        joint.maxMotorTorque = reader.Float("maxMotorTorque", 0.0f, kNonNegative);
-        break;
-    case JointKind::prismatic:
-        ReadAxis(reader, reader.Has("localAxisA") ? "localAxisA" : "localAxis1", joint);
-        joint.referenceAngle = reader.Float("refAngle", 0.0f, kCoordinate);
-        ReadLimits(reader, joint, kCoordinate);
-        joint.enableMotor = reader.Bool("enableMotor", false);
-        joint.motorSpeed = reader.Float("motorSpeed", 0.0f, kCoordinate);
-        joint.maxMotorForce = reader.Float("maxMotorForce", 0.0f, kNonNegative);
-        break;
-    case JointKind::distance:
-        joint.length = reader.Float("length", 1.0f, kLength);
-        ReadSpring(reader, joint, "frequency", "dampingRatio");
-        // Box2D 2.4 extensions (written by SaveRubeString): explicit length limits.
-        joint.minLength = reader.OptionalFloat("minLength", kNonNegative);
-        joint.maxLength = reader.OptionalFloat("maxLength", kNonNegative);
-        if (joint.minLength && joint.maxLength && *joint.minLength > *joint.maxLength)
-        {
-            reader.Diagnostics().Add(reader.FieldPath("maxLength"),
-                                     "expected maxLength >= minLength (" + FormatFloat(*joint.minLength) +
-                                         "), found " + FormatFloat(*joint.maxLength));
-        }
-        break;
-    case JointKind::rope:
-        joint.length = reader.Float("maxLength", 0.0f, kLength);
-        break;
-    case JointKind::pulley:
-        joint.groundAnchorA = reader.Vec("groundAnchorA", b2Vec2(-1.0f, 1.0f), kCoordinate);
-        joint.groundAnchorB = reader.Vec("groundAnchorB", b2Vec2(1.0f, 1.0f), kCoordinate);
-        joint.lengthA = reader.Float("lengthA", 0.0f, kLength);
-        joint.lengthB = reader.Float("lengthB", 0.0f, kLength);
-        joint.ratio = reader.Float("ratio", 1.0f, NumberLimits{0.0, kMaxCoordinate, true});
-        break;
-    case JointKind::mouse:
-        joint.target = reader.Vec("target", b2Vec2(0.0f, 0.0f), kCoordinate);
-        if (reader.Has("anchorB"))
-        {
-            joint.mouseAnchor = joint.anchorB;
-        }
-        joint.maxForce = reader.Float("maxForce", 0.0f, kNonNegative);
-        ReadSpring(reader, joint, "frequency", "dampingRatio");
-        break;
-    case JointKind::gear:
-        joint.ratio = reader.Float("ratio", 1.0f, kCoordinate);
-        break;
-    case JointKind::wheel:
-        ReadAxis(reader, "localAxisA", joint);
-        joint.enableMotor = reader.Bool("enableMotor", false);
-        joint.motorSpeed = reader.Float("motorSpeed", 0.0f, kCoordinate);
-        joint.maxMotorTorque = reader.Float("maxMotorTorque", 0.0f, kNonNegative);
-        ReadSpring(reader, joint, "springFrequency", "springDampingRatio");
-        // Box2D 2.4 extension (written by SaveRubeString): translation limits.
-        ReadLimits(reader, joint, kCoordinate);
-        break;
-    case JointKind::weld:
-        joint.referenceAngle = reader.Float("refAngle", 0.0f, kCoordinate);
-        ReadSpring(reader, joint, "frequency", "dampingRatio");
-        break;
-    case JointKind::friction:
-        joint.maxForce = reader.Float("maxForce", 0.0f, kNonNegative);
-        joint.maxTorque = reader.Float("maxTorque", 0.0f, kNonNegative);
-        break;
-    case JointKind::motor:
-        // Before RUBE 1.7 the linear offset was saved as anchorA.
-        joint.linearOffset = reader.Has("linearOffset")
-                                 ? reader.Vec("linearOffset", b2Vec2(0.0f, 0.0f), kCoordinate)
-                                 : joint.anchorA;
-        joint.referenceAngle = reader.Float("refAngle", 0.0f, kCoordinate);
-        joint.maxForce = reader.Float("maxForce", 1.0f, kNonNegative);
-        joint.maxTorque = reader.Float("maxTorque", 1.0f, kNonNegative);
-        joint.correctionFactor = reader.Float("correctionFactor", 0.3f, kUnit);
-        break;
-    }
-}
-
 std::optional<JointModel> ReadJoint(const ObjectReader& reader, int bodyCount)
 {
     JointModel joint;
@@ -491,7 +356,7 @@ std::optional<JointModel> ReadJoint(const ObjectReader& reader, int bodyCount)
     joint.name = reader.String("name");
     const Json* type = reader.Find("type");
     std::string typeList;
-    for (const auto& entry : kJointTypes)
+    for (const JointType& entry : JointTypes())
     {
         typeList += (typeList.empty() ? "" : ", ") + std::string(entry.name);
     }
@@ -501,25 +366,19 @@ std::optional<JointModel> ReadJoint(const ObjectReader& reader, int bodyCount)
                                  "expected a joint type (" + typeList + "), but the field is missing");
         return std::nullopt;
     }
-    bool known = false;
+    const JointType* jointType = nullptr;
     if (type->is_string())
     {
         joint.type = type->get<std::string>();
-        for (const auto& entry : kJointTypes)
-        {
-            if (entry.name == joint.type)
-            {
-                joint.kind = entry.kind;
-                known = true;
-            }
-        }
+        jointType = FindJointType(joint.type);
     }
-    if (!known)
+    if (jointType == nullptr)
     {
         reader.Diagnostics().Add(reader.FieldPath("type"),
                                  "expected a joint type (" + typeList + "), found " + Describe(*type));
         return std::nullopt;
     }
+    joint.kind = jointType->kind;
     const bool gear = joint.kind == JointKind::gear;
     auto bodyA = ReadIndex(reader, "bodyA", bodyCount, "body", !gear);
     auto bodyB = ReadIndex(reader, "bodyB", bodyCount, "body", !gear);
@@ -533,7 +392,9 @@ std::optional<JointModel> ReadJoint(const ObjectReader& reader, int bodyCount)
                                      std::to_string(*bodyB));
     }
     joint.collideConnected = reader.Bool("collideConnected", false);
-    ReadJointFields(reader, joint);
+    joint.anchorA = reader.Vec("anchorA", b2Vec2(0.0f, 0.0f), kCoordinate);
+    joint.anchorB = reader.Vec("anchorB", b2Vec2(0.0f, 0.0f), kCoordinate);
+    ReadJointTypeFields(reader, *jointType, joint);
     joint.properties = ReadCustomProperties(reader);
     return joint;
 }
@@ -629,14 +490,14 @@ SceneImage ReadImage(const ObjectReader& reader, int bodyCount)
         auto index = ReadInteger(*body, reader.FieldPath("body"), reader.Diagnostics(), -1, bodyCount - 1);
         image.bodyIndex = index ? static_cast<int>(*index) : -1;
     }
-    image.center = reader.Vec("center", b2Vec2(0.0f, 0.0f));
-    image.angle = reader.Float("angle", 0.0f);
-    image.scale = reader.Float("scale", 1.0f);
-    image.aspectScale = reader.Float("aspectScale", 1.0f);
+    image.center = reader.Vec("center", b2Vec2(0.0f, 0.0f), kCoordinate);
+    image.angle = reader.Float("angle", 0.0f, kCoordinate);
+    image.scale = reader.Float("scale", 1.0f, kImageScale);
+    image.aspectScale = reader.Float("aspectScale", 1.0f, kImageScale);
     image.flip = reader.Bool("flip", false);
-    image.opacity = reader.Float("opacity", 1.0f);
+    image.opacity = reader.Float("opacity", 1.0f, kUnit);
     image.filter = reader.Int("filter", 1, 0, 1 << 30);
-    image.renderOrder = reader.Float("renderOrder", 0.0f);
+    image.renderOrder = reader.Float("renderOrder", 0.0f, kCoordinate);
     if (const Json* tint = reader.Find("colorTint"))
     {
         const std::string path = reader.FieldPath("colorTint");
@@ -657,13 +518,13 @@ SceneImage ReadImage(const ObjectReader& reader, int bodyCount)
     if (const Json* corners = reader.Find("corners"))
     {
         image.corners =
-            ReadVertexList(*corners, reader.FieldPath("corners"), reader.Diagnostics(), kAnyFinite)
+            ReadVertexList(*corners, reader.FieldPath("corners"), reader.Diagnostics(), kCoordinate)
                 .value_or(std::vector<b2Vec2>{});
     }
     if (const Json* uv = reader.Find("glTexCoordPointer"))
     {
         const std::string path = reader.FieldPath("glTexCoordPointer");
-        auto numbers = ReadFloatArray(*uv, path, reader.Diagnostics(), kAnyFinite);
+        auto numbers = ReadFloatArray(*uv, path, reader.Diagnostics(), kCoordinate);
         if (numbers && numbers->size() % 2 != 0)
         {
             reader.Diagnostics().Add(path, "expected an even count of numbers (u, v pairs), found " +
@@ -700,9 +561,18 @@ RubeDocument ReadRubeDocument(const Json& root, DiagnosticList& diagnostics)
         diagnostics.Add("", "expected a JSON object at the top level, found " + Describe(root));
         return document;
     }
+    const std::string effectsKeys = EffectsConfigKeys(root);
+    if (!effectsKeys.empty() && RubeSceneKeys(root).empty())
+    {
+        diagnostics.Add("", "expected a RUBE scene, found an effects config (top-level " + effectsKeys +
+                                "; a scene has \"body\"): load it as an effects config (contactfx: "
+                                "--effects FILE)");
+        return document;
+    }
+    WarnUnknownRubeKeys(root, diagnostics);
     ObjectReader world(root, "", diagnostics);
     // b2dJson reads a missing gravity as (0, 0); the world flags default to Box2D's.
-    document.gravity = world.Vec("gravity", b2Vec2(0.0f, 0.0f), kCoordinate);
+    document.gravity = world.Vec("gravity", b2Vec2(0.0f, 0.0f), kGravity);
     WorldSettings& settings = document.settings;
     settings.allowSleep = world.Bool("allowSleep", settings.allowSleep);
     settings.autoClearForces = world.Bool("autoClearForces", settings.autoClearForces);

@@ -7,7 +7,7 @@
 #include "contactfx/scene/text_file.h"
 #include "scene/custom_properties_json.h"
 #include "scene/json_writer.h"
-#include "scene/stiffness.h"
+#include "scene/rube_joints.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -46,7 +46,8 @@ private:
     Json WriteFixture(b2Fixture& fixture, const SceneFixture* entry, const std::string& path);
     Json WriteShape(const b2Shape& shape, const std::string& path, std::string& key);
     Json WriteJoint(b2Joint& joint, const SceneJoint* entry, const std::string& path);
-    void WriteJointFields(b2Joint& joint, bool rope, Json& value, const std::string& path);
+    void WriteJointFields(const scene_detail::JointType& type, const scene_detail::JointModel& model,
+                          Json& value, const std::string& path);
     Json WriteImage(const SceneImage& image, const std::string& path);
 
     const Scene& m_scene;
@@ -329,20 +330,24 @@ Json SceneWriter::WriteShape(const b2Shape& shape, const std::string& fixturePat
 
 Json SceneWriter::WriteJoint(b2Joint& joint, const SceneJoint* entry, const std::string& path)
 {
+    // A rope is a distance joint the scene remembers as a rope; otherwise the first type that Box2D type is.
     const bool rope = entry != nullptr && entry->type == "rope" && joint.GetType() == e_distanceJoint;
-    static const std::unordered_map<int, const char*> kNames = {
-        {e_revoluteJoint, "revolute"}, {e_prismaticJoint, "prismatic"}, {e_distanceJoint, "distance"},
-        {e_pulleyJoint, "pulley"},     {e_mouseJoint, "mouse"},         {e_gearJoint, "gear"},
-        {e_wheelJoint, "wheel"},       {e_weldJoint, "weld"},           {e_frictionJoint, "friction"},
-        {e_motorJoint, "motor"},
-    };
-    auto name = kNames.find(joint.GetType());
-    if (name == kNames.end())
+    const scene_detail::JointType* type = nullptr;
+    for (const scene_detail::JointType& candidate : scene_detail::JointTypes())
+    {
+        if (rope ? candidate.kind == scene_detail::JointKind::rope : candidate.box2d == joint.GetType())
+        {
+            type = &candidate;
+            break;
+        }
+    }
+    scene_detail::JointModel model;
+    if (type == nullptr || !type->extract(joint, model, scene_detail::JointExtract{m_jointIndex}))
     {
         return nullptr;
     }
     Json value = Json::object();
-    value["type"] = rope ? "rope" : name->second;
+    value["type"] = type->name;
     if (entry != nullptr && !entry->name.empty())
     {
         value["name"] = entry->name;
@@ -350,11 +355,7 @@ Json SceneWriter::WriteJoint(b2Joint& joint, const SceneJoint* entry, const std:
     value["bodyA"] = m_bodyIndex.at(joint.GetBodyA());
     value["bodyB"] = m_bodyIndex.at(joint.GetBodyB());
     value["collideConnected"] = joint.GetCollideConnected();
-    WriteJointFields(joint, rope, value, path);
-    if (value.is_null())
-    {
-        return nullptr;
-    }
+    WriteJointFields(*type, model, value, path);
     if (entry != nullptr)
     {
         Json properties = scene_detail::WriteCustomProperties(entry->properties, m_writer,
@@ -367,154 +368,39 @@ Json SceneWriter::WriteJoint(b2Joint& joint, const SceneJoint* entry, const std:
     return value;
 }
 
-void SceneWriter::WriteJointFields(b2Joint& joint, bool rope, Json& value, const std::string& path)
+void SceneWriter::WriteJointFields(const scene_detail::JointType& type, const scene_detail::JointModel& model,
+                                   Json& value, const std::string& path)
 {
-    auto field = [&](const char* key, float number) { value[key] = Float(number, JoinPath(path, key)); };
-    auto vec = [&](const char* key, b2Vec2 v) { value[key] = Vec(v, JoinPath(path, key)); };
-    auto spring =
-        [&](const char* frequencyKey, const char* ratioKey, float stiffness, float damping, float mass)
+    for (const scene_detail::JointField& field : type.fields)
     {
-        const scene_detail::Spring converted = scene_detail::SpringFromStiffness(stiffness, damping, mass);
-        field(frequencyKey, converted.frequency);
-        field(ratioKey, converted.dampingRatio);
-    };
-    b2Body& bodyA = *joint.GetBodyA();
-    b2Body& bodyB = *joint.GetBodyB();
-    switch (joint.GetType())
-    {
-    case e_revoluteJoint:
-    {
-        auto& revolute = static_cast<b2RevoluteJoint&>(joint);
-        vec("anchorA", revolute.GetLocalAnchorA());
-        vec("anchorB", revolute.GetLocalAnchorB());
-        field("refAngle", revolute.GetReferenceAngle());
-        value["enableLimit"] = revolute.IsLimitEnabled();
-        field("lowerLimit", revolute.GetLowerLimit());
-        field("upperLimit", revolute.GetUpperLimit());
-        value["enableMotor"] = revolute.IsMotorEnabled();
-        field("motorSpeed", revolute.GetMotorSpeed());
-        field("maxMotorTorque", revolute.GetMaxMotorTorque());
-        break;
-    }
-    case e_prismaticJoint:
-    {
-        auto& prismatic = static_cast<b2PrismaticJoint&>(joint);
-        vec("anchorA", prismatic.GetLocalAnchorA());
-        vec("anchorB", prismatic.GetLocalAnchorB());
-        vec("localAxisA", prismatic.GetLocalAxisA());
-        field("refAngle", prismatic.GetReferenceAngle());
-        value["enableLimit"] = prismatic.IsLimitEnabled();
-        field("lowerLimit", prismatic.GetLowerLimit());
-        field("upperLimit", prismatic.GetUpperLimit());
-        value["enableMotor"] = prismatic.IsMotorEnabled();
-        field("motorSpeed", prismatic.GetMotorSpeed());
-        field("maxMotorForce", prismatic.GetMaxMotorForce());
-        break;
-    }
-    case e_distanceJoint:
-    {
-        auto& distance = static_cast<b2DistanceJoint&>(joint);
-        vec("anchorA", distance.GetLocalAnchorA());
-        vec("anchorB", distance.GetLocalAnchorB());
-        if (rope)
-        {
-            field("maxLength", distance.GetMaxLength());
-            break;
-        }
-        field("length", distance.GetLength());
-        spring("frequency", "dampingRatio", distance.GetStiffness(), distance.GetDamping(),
-               scene_detail::LinearSpringMass(bodyA, bodyB));
-        // Box2D 2.4 fields RUBE does not have.
-        field("minLength", distance.GetMinLength());
-        field("maxLength", distance.GetMaxLength());
-        break;
-    }
-    case e_pulleyJoint:
-    {
-        auto& pulley = static_cast<b2PulleyJoint&>(joint);
-        vec("groundAnchorA", pulley.GetGroundAnchorA());
-        vec("groundAnchorB", pulley.GetGroundAnchorB());
-        vec("anchorA", bodyA.GetLocalPoint(pulley.GetAnchorA()));
-        vec("anchorB", bodyB.GetLocalPoint(pulley.GetAnchorB()));
-        field("lengthA", pulley.GetLengthA());
-        field("lengthB", pulley.GetLengthB());
-        field("ratio", pulley.GetRatio());
-        break;
-    }
-    case e_mouseJoint:
-    {
-        auto& mouse = static_cast<b2MouseJoint&>(joint);
-        vec("target", mouse.GetTarget());
-        vec("anchorB", mouse.GetAnchorB());
-        field("maxForce", mouse.GetMaxForce());
-        spring("frequency", "dampingRatio", mouse.GetStiffness(), mouse.GetDamping(),
-               scene_detail::LinearSpringMass(bodyA, bodyB));
-        break;
-    }
-    case e_gearJoint:
-    {
-        auto& gear = static_cast<b2GearJoint&>(joint);
-        auto joint1 = m_jointIndex.find(gear.GetJoint1());
-        auto joint2 = m_jointIndex.find(gear.GetJoint2());
-        if (joint1 == m_jointIndex.end() || joint2 == m_jointIndex.end())
-        {
-            value = nullptr; // refers to a joint that no longer exists
-            return;
-        }
-        value["joint1"] = joint1->second;
-        value["joint2"] = joint2->second;
-        field("ratio", gear.GetRatio());
-        break;
-    }
-    case e_wheelJoint:
-    {
-        auto& wheel = static_cast<b2WheelJoint&>(joint);
-        vec("anchorA", wheel.GetLocalAnchorA());
-        vec("anchorB", wheel.GetLocalAnchorB());
-        vec("localAxisA", wheel.GetLocalAxisA());
-        value["enableMotor"] = wheel.IsMotorEnabled();
-        field("motorSpeed", wheel.GetMotorSpeed());
-        field("maxMotorTorque", wheel.GetMaxMotorTorque());
-        spring("springFrequency", "springDampingRatio", wheel.GetStiffness(), wheel.GetDamping(),
-               scene_detail::LinearSpringMass(bodyA, bodyB));
-        // Box2D 2.4 fields RUBE does not have.
-        value["enableLimit"] = wheel.IsLimitEnabled();
-        field("lowerLimit", wheel.GetLowerLimit());
-        field("upperLimit", wheel.GetUpperLimit());
-        break;
-    }
-    case e_weldJoint:
-    {
-        auto& weld = static_cast<b2WeldJoint&>(joint);
-        vec("anchorA", weld.GetLocalAnchorA());
-        vec("anchorB", weld.GetLocalAnchorB());
-        field("refAngle", weld.GetReferenceAngle());
-        spring("frequency", "dampingRatio", weld.GetStiffness(), weld.GetDamping(),
-               scene_detail::AngularSpringInertia(bodyA, bodyB));
-        break;
-    }
-    case e_frictionJoint:
-    {
-        auto& friction = static_cast<b2FrictionJoint&>(joint);
-        vec("anchorA", friction.GetLocalAnchorA());
-        vec("anchorB", friction.GetLocalAnchorB());
-        field("maxForce", friction.GetMaxForce());
-        field("maxTorque", friction.GetMaxTorque());
-        break;
-    }
-    case e_motorJoint:
-    {
-        auto& motor = static_cast<b2MotorJoint&>(joint);
-        vec("linearOffset", motor.GetLinearOffset());
-        field("refAngle", motor.GetAngularOffset());
-        field("maxForce", motor.GetMaxForce());
-        field("maxTorque", motor.GetMaxTorque());
-        field("correctionFactor", motor.GetCorrectionFactor());
-        break;
-    }
-    default:
-        value = nullptr;
-        break;
+        const std::string key(field.key);
+        std::visit(
+            [&](auto member)
+            {
+                using T = decltype(member);
+                if constexpr (std::is_same_v<T, float scene_detail::JointModel::*>)
+                {
+                    value[key] = Float(model.*member, JoinPath(path, key));
+                }
+                else if constexpr (std::is_same_v<T, std::optional<float> scene_detail::JointModel::*>)
+                {
+                    if (model.*member)
+                    {
+                        value[key] = Float(*(model.*member), JoinPath(path, key));
+                    }
+                }
+                else if constexpr (std::is_same_v<T, b2Vec2 scene_detail::JointModel::*>)
+                {
+                    value[key] = Vec(model.*member, JoinPath(path, key));
+                }
+                else if constexpr (std::is_same_v<T, bool scene_detail::JointModel::*> ||
+                                   std::is_same_v<T, int scene_detail::JointModel::*>)
+                {
+                    value[key] = model.*member;
+                }
+                // std::monostate: a key that is read by nobody and not written
+            },
+            field.member);
     }
 }
 

@@ -1,9 +1,7 @@
 #include "scene/scene_builder.h"
 
 #include "scene/mass_check.h"
-
-#include <cfloat>
-#include <cmath>
+#include "scene/rube_joints.h"
 
 namespace cfx::scene_detail
 {
@@ -146,198 +144,13 @@ b2Body* CreateBody(b2World& world, const BodyModel& model, Scene& scene, Diagnos
     return body;
 }
 
-/// Stiffness and damping from RUBE's frequency and damping ratio; false (after reporting) when they overflow.
-bool Stiffness(const JointModel& model, bool angular, b2Body* bodyA, b2Body* bodyB, float& stiffness,
-               float& damping, DiagnosticList& diagnostics)
-{
-    if (angular)
-    {
-        b2AngularStiffness(stiffness, damping, model.frequency, model.dampingRatio, bodyA, bodyB);
-    }
-    else
-    {
-        b2LinearStiffness(stiffness, damping, model.frequency, model.dampingRatio, bodyA, bodyB);
-    }
-    if (!std::isfinite(stiffness) || !std::isfinite(damping))
-    {
-        const char* key = model.kind == JointKind::wheel ? "springFrequency" : "frequency";
-        diagnostics.Add(JoinPath(model.path, key),
-                        "the spring is too stiff for the masses it connects: stiffness or damping overflows");
-        return false;
-    }
-    return true;
-}
-
 b2Joint* CreateJoint(b2World& world, const JointModel& model, const Scene& scene,
                      const std::vector<b2Joint*>& created, DiagnosticList& diagnostics)
 {
-    b2Body* bodyA = scene.bodies[static_cast<std::size_t>(model.bodyA)].body;
-    b2Body* bodyB = scene.bodies[static_cast<std::size_t>(model.bodyB)].body;
-    auto finish = [&](b2JointDef& def) -> b2Joint*
-    {
-        def.bodyA = bodyA;
-        def.bodyB = bodyB;
-        def.collideConnected = model.collideConnected;
-        return world.CreateJoint(&def);
-    };
-    switch (model.kind)
-    {
-    case JointKind::revolute:
-    {
-        b2RevoluteJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.referenceAngle = model.referenceAngle;
-        def.enableLimit = model.enableLimit;
-        def.lowerAngle = model.lowerLimit;
-        def.upperAngle = model.upperLimit;
-        def.enableMotor = model.enableMotor;
-        def.motorSpeed = model.motorSpeed;
-        def.maxMotorTorque = model.maxMotorTorque;
-        return finish(def);
-    }
-    case JointKind::prismatic:
-    {
-        b2PrismaticJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.localAxisA = model.localAxisA;
-        def.referenceAngle = model.referenceAngle;
-        def.enableLimit = model.enableLimit;
-        def.lowerTranslation = model.lowerLimit;
-        def.upperTranslation = model.upperLimit;
-        def.enableMotor = model.enableMotor;
-        def.motorSpeed = model.motorSpeed;
-        def.maxMotorForce = model.maxMotorForce;
-        return finish(def);
-    }
-    case JointKind::distance:
-    {
-        b2DistanceJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.length = model.length;
-        if (!Stiffness(model, false, bodyA, bodyB, def.stiffness, def.damping, diagnostics))
-        {
-            return nullptr;
-        }
-        // Box2D 2.3's distance joint was rigid at `length` unless it had a spring, which had no limits.
-        if (model.frequency > 0.0f)
-        {
-            def.minLength = 0.0f;
-            def.maxLength = FLT_MAX;
-        }
-        else
-        {
-            def.minLength = model.length;
-            def.maxLength = model.length;
-        }
-        def.minLength = model.minLength.value_or(def.minLength);
-        def.maxLength = model.maxLength.value_or(def.maxLength);
-        return finish(def);
-    }
-    case JointKind::rope:
-    {
-        // Box2D 2.4 has no rope joint: a distance joint without spring, slack up to its maximum length.
-        b2DistanceJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.length = model.length;
-        def.minLength = 0.0f;
-        def.maxLength = model.length;
-        def.stiffness = 0.0f;
-        def.damping = 0.0f;
-        return finish(def);
-    }
-    case JointKind::pulley:
-    {
-        b2PulleyJointDef def;
-        def.groundAnchorA = model.groundAnchorA;
-        def.groundAnchorB = model.groundAnchorB;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.lengthA = model.lengthA;
-        def.lengthB = model.lengthB;
-        def.ratio = model.ratio;
-        return finish(def);
-    }
-    case JointKind::mouse:
-    {
-        b2MouseJointDef def;
-        // b2dJson saves the grabbed point (world) as anchorB and the point it is pulled to as target.
-        def.target = model.mouseAnchor.value_or(model.target);
-        def.maxForce = model.maxForce;
-        if (!Stiffness(model, false, bodyA, bodyB, def.stiffness, def.damping, diagnostics))
-        {
-            return nullptr;
-        }
-        b2Joint* joint = finish(def);
-        static_cast<b2MouseJoint*>(joint)->SetTarget(model.target);
-        return joint;
-    }
-    case JointKind::gear:
-    {
-        b2GearJointDef def;
-        def.joint1 = created[static_cast<std::size_t>(model.joint1)];
-        def.joint2 = created[static_cast<std::size_t>(model.joint2)];
-        if (def.joint1 == nullptr || def.joint2 == nullptr)
-        {
-            return nullptr; // the problem of that joint is reported already
-        }
-        def.ratio = model.ratio;
-        return finish(def);
-    }
-    case JointKind::wheel:
-    {
-        b2WheelJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.localAxisA = model.localAxisA;
-        def.enableLimit = model.enableLimit;
-        def.lowerTranslation = model.lowerLimit;
-        def.upperTranslation = model.upperLimit;
-        def.enableMotor = model.enableMotor;
-        def.motorSpeed = model.motorSpeed;
-        def.maxMotorTorque = model.maxMotorTorque;
-        if (!Stiffness(model, false, bodyA, bodyB, def.stiffness, def.damping, diagnostics))
-        {
-            return nullptr;
-        }
-        return finish(def);
-    }
-    case JointKind::weld:
-    {
-        b2WeldJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.referenceAngle = model.referenceAngle;
-        if (!Stiffness(model, true, bodyA, bodyB, def.stiffness, def.damping, diagnostics))
-        {
-            return nullptr;
-        }
-        return finish(def);
-    }
-    case JointKind::friction:
-    {
-        b2FrictionJointDef def;
-        def.localAnchorA = model.anchorA;
-        def.localAnchorB = model.anchorB;
-        def.maxForce = model.maxForce;
-        def.maxTorque = model.maxTorque;
-        return finish(def);
-    }
-    case JointKind::motor:
-    {
-        b2MotorJointDef def;
-        def.linearOffset = model.linearOffset;
-        def.angularOffset = model.referenceAngle;
-        def.maxForce = model.maxForce;
-        def.maxTorque = model.maxTorque;
-        def.correctionFactor = model.correctionFactor;
-        return finish(def);
-    }
-    }
-    return nullptr;
+    JointBuild context{world, scene.bodies[static_cast<std::size_t>(model.bodyA)].body,
+                       scene.bodies[static_cast<std::size_t>(model.bodyB)].body, created, diagnostics};
+    const JointType& type = JointTypeOf(model.kind);
+    return type.build(model, type, context);
 }
 
 } // namespace

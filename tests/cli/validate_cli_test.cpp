@@ -93,7 +93,7 @@ std::vector<BadFile> BadFiles()
         {"out_of_range.json", Fixture(kCircle, R"(, "position": {"x": 1e30, "y": 0})"), "body[0].position.x",
          "between"},
         {"negative_density.json", Fixture(R"({"density": -1, "circle": {"radius": 1}})"),
-         "body[0].fixture[0].density", ">= 0"},
+         "body[0].fixture[0].density", "between 0 and 1e+06"},
         {"negative_radius.json", Fixture(R"({"density": 1, "circle": {"radius": -1}})"),
          "body[0].fixture[0].circle.radius", "> 0"},
         {"one_vertex.json", Polygon("0", "0"), "body[0].fixture[0].polygon.vertices", "found 1"},
@@ -102,8 +102,17 @@ std::vector<BadFile> BadFiles()
          "body[0].fixture[0].polygon.vertices", "found 9"},
         {"degenerate.json", Polygon("0, 1, 2", "0, 0, 0"), "body[0].fixture[0].polygon.vertices",
          "collinear"},
-        {"non_convex.json", Polygon("0, 2, 0, 0.5", "0, 1, 2, 1"), "body[0].fixture[0].polygon.vertices",
-         "not convex"},
+        {"welded.json", Polygon("0, 1, 1.001", "0, 0, 0.001"), "body[0].fixture[0].polygon.vertices",
+         "only 2 vertices are left after welding"},
+        {"huge_restitution.json", Fixture(R"({"restitution": 1e30, "circle": {"radius": 1}})"),
+         "body[0].fixture[0].restitution", "expected a number between 0 and 10, found 1e+30"},
+        {"huge_radius.effects.json",
+         R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "radius": 3e9}]})",
+         "particleTypes[0].radius", "expected a number > 0 and <= 10, found 3e+09"},
+        {"huge_rate.effects.json",
+         Effects(R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks",
+                     "ratePerIntensity": 1e9, "maxRate": 1e9})"),
+         "rules[0].maxRate", "expected a number between 0 and 1e+05, found 1e+09"},
         {"joint_body.json", TwoBodiesAndJoint(R"({"type": "revolute", "bodyA": 0, "bodyB": 7})"),
          "joint[0].bodyB", "between 0 and 1"},
         {"glass.json", glass, "body[3].fixture[0].customProperties[0].string", "unknown material \"glass\""},
@@ -299,6 +308,121 @@ TEST(CliValidate, ScenesAreCheckedAgainstTheSelectedEffectsConfig)
     EXPECT_EQ(reports.at(glass)["ok"], true) << "structure checked without a config";
 }
 
+// Issue 15: a config with seven independent problems reports all seven, each with its path.
+TEST(CliValidate, EveryProblemOfAnEffectsConfigInOnePass)
+{
+    const std::filesystem::path dir = ScratchDir("validate_one_pass");
+    nlohmann::json config = nlohmann::json::parse(FileText(Scene("default.effects.json")));
+    config["particleTypes"][0]["lifetime"] = 0;
+    config["particleTypes"][0]["drag"] = -1;
+    config["particleTypes"][1]["lifetme"] = 2;
+    config["rules"][0]["threshold"] = -1;
+    config["rules"][1]["particleType"] = "glitter";
+    config["rules"][2]["materialB"] = "glass";
+    config["budget"]["capacity"] = 0;
+    WriteTestFile(dir / "seven.effects.json", config.dump(1));
+    const CliResult result = RunCli("validate --json " + (dir / "seven.effects.json").string());
+    EXPECT_EQ(result.exitCode, 1);
+    const nlohmann::json report = JsonLines(result.output).begin()->second;
+    EXPECT_EQ(report["errors"].size(), 7U) << report.dump(2);
+    EXPECT_TRUE(HasError(report, "particleTypes[0].lifetime", "> 0"));
+    EXPECT_TRUE(HasError(report, "particleTypes[0].drag", "found -1"));
+    EXPECT_TRUE(HasError(report, "particleTypes[1].lifetme", "unknown field, did you mean `lifetime`?"));
+    EXPECT_TRUE(HasError(report, "rules[0].threshold", "found -1"));
+    EXPECT_TRUE(HasError(report, "rules[1].particleType", "unknown particle type \"glitter\""));
+    EXPECT_TRUE(HasError(report, "rules[2].materialB", "unknown material \"glass\""));
+    EXPECT_TRUE(HasError(report, "budget.capacity", "found 0"));
+}
+
+// Unknown keys in scenes and polygon vertices Box2D drops are warnings: listed, exit 0; --strict fails.
+TEST(CliValidate, WarningsAreListedAndStrictMakesThemErrors)
+{
+    const std::filesystem::path dir = ScratchDir("validate_warnings");
+    nlohmann::json scene = nlohmann::json::parse(FileText(Scene("grinder.json")));
+    scene["gravty"] = scene["gravity"];
+    scene.erase("gravity");
+    const std::string file = (dir / "gravty.json").string();
+    WriteTestFile(file, scene.dump());
+
+    const CliResult text = RunCli("validate " + file);
+    EXPECT_EQ(text.exitCode, 0) << text.output;
+    EXPECT_NE(text.output.find(file + ": gravty: warning: unknown key, did you mean `gravity`?"),
+              std::string::npos)
+        << text.output;
+    EXPECT_NE(text.output.find(file + ": ok: scene"), std::string::npos);
+    EXPECT_NE(text.output.find("(1 warning)"), std::string::npos);
+
+    const CliResult json = RunCli("validate --json " + file);
+    EXPECT_EQ(json.exitCode, 0);
+    const nlohmann::json report = JsonLines(json.output).at(file);
+    EXPECT_EQ(report["ok"], true);
+    ASSERT_EQ(report["warnings"].size(), 1U) << report.dump(2);
+    EXPECT_EQ(report["warnings"][0]["path"], "gravty");
+    EXPECT_EQ(report["warnings"][0]["message"], "unknown key, did you mean `gravity`?");
+
+    const CliResult strict = RunCli("validate --strict --json " + file);
+    EXPECT_EQ(strict.exitCode, 1);
+    const nlohmann::json strictReport = JsonLines(strict.output).at(file);
+    EXPECT_EQ(strictReport["ok"], false);
+    EXPECT_TRUE(HasError(strictReport, "gravty", "did you mean `gravity`?")) << strictReport.dump(2);
+    EXPECT_TRUE(strictReport["warnings"].empty());
+
+    const std::string arrow = (dir / "arrow.json").string();
+    WriteTestFile(arrow, Polygon("0, 2, 0, 0.5", "0, 1, 2, 1"));
+    const CliResult repaired = RunCli("validate " + arrow);
+    EXPECT_EQ(repaired.exitCode, 0) << repaired.output;
+    EXPECT_NE(repaired.output.find("body[0].fixture[0].polygon.vertices: warning: vertex 3 is not a corner"),
+              std::string::npos)
+        << repaired.output;
+    EXPECT_EQ(RunCli("validate --strict " + arrow).exitCode, 1);
+    EXPECT_EQ(RunCli("validate --strict " + Scene("grinder.json")).exitCode, 0);
+}
+
+// An effects config where a scene belongs, and the reverse, fail with a message that says so.
+TEST(CliValidate, AnEffectsConfigIsNotASceneAndTheReverse)
+{
+    const CliResult asScene = RunCli("run " + Scene("default.effects.json") + " --seconds 0.1");
+    EXPECT_NE(asScene.exitCode, 0);
+    EXPECT_NE(asScene.output.find("expected a RUBE scene, found an effects config"), std::string::npos)
+        << asScene.output;
+    const CliResult asEffects =
+        RunCli("run --scene grinder --seconds 0.1 --effects " + Scene("grinder.json"));
+    EXPECT_NE(asEffects.exitCode, 0);
+    EXPECT_NE(asEffects.output.find("expected an effects config, found a RUBE scene"), std::string::npos)
+        << asEffects.output;
+    const CliResult validated = RunCli("validate --as scene " + Scene("default.effects.json"));
+    EXPECT_EQ(validated.exitCode, 1);
+    EXPECT_NE(validated.output.find("default.effects.json: expected a RUBE scene, found an effects config"),
+              std::string::npos)
+        << validated.output;
+}
+
+// Numbers out of their documented ranges are refused by run as by validate.
+TEST(CliValidate, RunRefusesNumbersOutOfRange)
+{
+    const std::filesystem::path dir = ScratchDir("validate_ranges");
+    nlohmann::json scene = nlohmann::json::parse(FileText(Scene("grinder.json")));
+    scene["body"][0]["fixture"][0]["restitution"] = 1e30;
+    WriteTestFile(dir / "bouncy.json", scene.dump());
+    const CliResult bouncy = RunCli("run " + (dir / "bouncy.json").string() + " --seconds 0.1");
+    EXPECT_NE(bouncy.exitCode, 0);
+    EXPECT_NE(bouncy.output.find("body[0].fixture[0].restitution: expected a number between 0 and 10"),
+              std::string::npos)
+        << bouncy.output;
+
+    nlohmann::json config = nlohmann::json::parse(FileText(Scene("default.effects.json")));
+    config["particleTypes"][0]["gravityScale"] = 3.4e38;
+    config["rules"][0]["ratePerIntensity"] = 1e9;
+    WriteTestFile(dir / "huge.effects.json", config.dump());
+    const CliResult huge =
+        RunCli("run --scene grinder --seconds 0.1 --effects " + (dir / "huge.effects.json").string());
+    EXPECT_NE(huge.exitCode, 0);
+    EXPECT_NE(huge.output.find("particleTypes[0].gravityScale: expected a number between -100 and 100"),
+              std::string::npos)
+        << huge.output;
+    EXPECT_NE(huge.output.find("rules[0].ratePerIntensity"), std::string::npos) << huge.output;
+}
+
 TEST(CliValidate, KindComesFromAsNameOrContent)
 {
     const std::filesystem::path dir = ScratchDir("validate_kind");
@@ -311,7 +435,8 @@ TEST(CliValidate, KindComesFromAsNameOrContent)
     EXPECT_EQ(JsonLines(forced.output).begin()->second["kind"], "scene");
     const CliResult asEffects = RunCli("validate --as effects " + Scene("physics_driven_particles.json"));
     EXPECT_EQ(asEffects.exitCode, 1);
-    EXPECT_NE(asEffects.output.find("body: unknown field"), std::string::npos) << asEffects.output;
+    EXPECT_NE(asEffects.output.find("expected an effects config, found a RUBE scene"), std::string::npos)
+        << asEffects.output;
 }
 
 TEST(CliValidate, MissingFilesAndBadFlagsFail)

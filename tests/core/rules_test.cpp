@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 
 namespace cfx
 {
@@ -94,6 +95,37 @@ TEST(Config, ValidateNamesEveryBadField)
                                                "rules[1].threshold", "rules[2].materialB", "rules[4]",
                                                "budget.capacity"}));
     EXPECT_NE(problems[2].message.find("NaN"), std::string::npos);
+}
+
+// Values built in code get the same ranges as files (docs/effects-config.md): each keeps the simulation
+// finite and its cost bounded.
+TEST(Config, ValidateBoundsEveryNumber)
+{
+    EffectsConfig config = DefaultPreset();
+    ParticleTypeDef& type = config.particleTypes[0];
+    type.radius = 3e9f;
+    type.gravityScale = std::numeric_limits<float>::max();
+    type.normalSpeed = -std::numeric_limits<float>::max();
+    type.spread = std::numeric_limits<float>::infinity();
+    type.inheritA = 1e30f;
+    type.slipFactor = -1e30f;
+    RuleDef& rule = config.rules[0];
+    rule.ratePerIntensity = 1e9f;
+    rule.maxRate = 1e9f;
+    rule.burstMax = 1e9f;
+    config.assignments[0].massAbove = 1e30f;
+    std::vector<std::string> paths;
+    for (const Diagnostic& problem : Validate(config))
+    {
+        EXPECT_NE(problem.message.find("expected a number"), std::string::npos) << problem.ToString();
+        paths.push_back(problem.path);
+    }
+    EXPECT_EQ(paths, (std::vector<std::string>{"particleTypes[0].inheritA", "particleTypes[0].slipFactor",
+                                               "particleTypes[0].normalSpeed", "particleTypes[0].spread",
+                                               "particleTypes[0].gravityScale", "particleTypes[0].radius",
+                                               "rules[0].ratePerIntensity", "rules[0].maxRate",
+                                               "rules[0].burstMax", "assignments[0].massAbove"}));
+    EXPECT_TRUE(Validate(TutorialPreset()).empty());
 }
 
 TEST(Config, EffectsRefusesAnInvalidConfig)

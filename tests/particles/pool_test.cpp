@@ -296,6 +296,56 @@ TEST(ParticlePool, ResultsAreIdenticalWithOneOrTwoThreads)
     }
 }
 
+// A split step is cut into more runs than threads, taken as the threads free up; the runs are joined, and
+// the bodies of body-backed particles that died destroyed, in their order: Box2D's body list (and so the
+// world's next steps) comes out the same with any number of threads.
+TEST(ParticlePool, BodiesOfTheDeadGoInTheSameOrderWithAnyNumberOfThreads)
+{
+    auto run = [](unsigned threads)
+    {
+        ParticleSystemOptions options;
+        options.threads = threads;
+        options.minParticlesPerThread = 16;
+        auto scene = std::make_unique<Pool>(
+            std::vector<ParticleTypeDef>{Ball(0.3f, 0.5f, ParticleBackend::body), Ball(0.1f, 0.9f)},
+            ParticleBudget{400, RecyclePolicy::oldest}, options);
+        scene->CreateGround();
+        std::uint32_t seed = 9;
+        auto next = [&]()
+        {
+            seed = seed * 1664525u + 1013904223u;
+            return static_cast<float>(seed >> 8) / 16777216.0f;
+        };
+        for (int step = 0; step < 90; ++step)
+        {
+            for (int k = 0; k < 6; ++k)
+            {
+                scene->Add(b2Vec2(-5.0f + 10.0f * next(), 1.0f + 3.0f * next()),
+                           b2Vec2(-2.0f + 4.0f * next(), 0.0f), 0.05f + 0.5f * next(),
+                           static_cast<std::uint16_t>(k % 2));
+            }
+            scene->StepAll();
+        }
+        std::vector<b2Vec2> bodies;
+        for (const b2Body* body = scene->world->GetBodyList(); body != nullptr; body = body->GetNext())
+        {
+            bodies.push_back(body->GetPosition());
+        }
+        return std::make_pair(scene->system->ThreadsUsed(), bodies);
+    };
+    const auto [oneUsed, one] = run(1);
+    ASSERT_EQ(oneUsed, 1u);
+    ASSERT_GT(one.size(), 50u);
+    for (const unsigned threads : {2u, 3u})
+    {
+        const auto [used, many] = run(threads);
+        EXPECT_EQ(used, threads);
+        ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(b2Vec2)), 0)
+            << threads << " threads";
+    }
+}
+
 // A colliding step does about eight times the work per particle of a step without collision, so it is split
 // at minParticlesPerThread particles a thread and the other at eight times that.
 TEST(ParticlePool, CollidingStepsSplitAtFewerParticlesThanStepsWithoutCollision)

@@ -2,6 +2,7 @@
 #include "contactfx/render/cairo_renderer.h"
 #include "contactfx/render/frame_output.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <gtest/gtest.h>
 
@@ -83,6 +84,71 @@ TEST(Output, ASequenceLeftUnfinishedRemovesTheFramesItWrote)
         sink.Finish();
     }
     EXPECT_TRUE(std::filesystem::exists(dir / "f_00.png"));
+}
+
+namespace
+{
+
+std::filesystem::path FreshDir(const char* name)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+} // namespace
+
+TEST(Output, AVideoIsCheckedWithFfprobeAndLeftInTheCallersTemporaryFile)
+{
+    if (render::FindProgram("ffmpeg").empty() || render::FindProgram("ffprobe").empty())
+    {
+        GTEST_SKIP() << "ffmpeg and ffprobe are not installed";
+    }
+    const std::filesystem::path dir = FreshDir("contactfx_test_video_temporary");
+    const std::filesystem::path temporary = dir / ".clip.mp4.mine";
+    render::CairoRenderer frame(8, 6);
+    frame.Begin(render::MakeCamera(8, 6, 1.0f, b2Vec2(0.0f, 0.0f)));
+    {
+        render::VideoSink sink(dir / "clip.mp4", render::OutputKind::mp4, 8, 6, 10.0, temporary);
+        for (int i = 0; i < 3; ++i)
+        {
+            sink.Write(frame);
+        }
+        sink.Finish();
+    }
+    // Not renamed: the caller commits it with its other outputs.
+    EXPECT_FALSE(std::filesystem::exists(dir / "clip.mp4"));
+    const render::VideoProbe probe = render::ProbeVideo(temporary);
+    ASSERT_TRUE(probe.ok) << probe.message;
+    EXPECT_EQ(probe.frames, 3);
+    EXPECT_NEAR(probe.seconds, 0.3, 0.05);
+    {
+        // Unfinished: what ffmpeg wrote is removed.
+        render::VideoSink sink(dir / "clip.gif", render::OutputKind::gif, 8, 6, 10.0, dir / ".clip.gif.mine");
+        sink.Write(frame);
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / ".clip.gif.mine"));
+}
+
+TEST(Output, FfprobeFindsNoVideoInACutOffFile)
+{
+    if (render::FindProgram("ffprobe").empty())
+    {
+        GTEST_SKIP() << "ffprobe is not installed";
+    }
+    const std::filesystem::path dir = FreshDir("contactfx_test_video_probe");
+    std::FILE* file = std::fopen((dir / "broken.mp4").c_str(), "wb");
+    ASSERT_NE(file, nullptr);
+    const std::string bytes("\0\0\0\x20"
+                            "ftypisom partial",
+                            20); // an MP4's start, nothing after
+    std::fwrite(bytes.data(), 1, bytes.size(), file);
+    std::fclose(file);
+    const render::VideoProbe probe = render::ProbeVideo(dir / "broken.mp4");
+    EXPECT_FALSE(probe.ok);
+    EXPECT_FALSE(probe.message.empty());
+    EXPECT_FALSE(render::ProbeVideo(dir / "missing.mp4").ok);
 }
 
 } // namespace cfx::test

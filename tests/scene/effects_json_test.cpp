@@ -90,6 +90,82 @@ TEST(EffectsJson, SemanticProblemsUseJsonPaths)
                                         "rules[0].threshold", "rules[2]"}));
 }
 
+// Reading problems (a misspelt field) and semantic ones (ranges, names) in one pass: the seven independent
+// problems of issue 15 are all reported, each with its path.
+TEST(EffectsJson, ReadingAndSemanticProblemsAreReportedTogether)
+{
+    EXPECT_EQ(PathsOf(R"({"materials": ["steel", "stone"],
+        "particleTypes": [{"name": "sparks", "lifetime": 0, "drag": -1, "radus": 0.1}],
+        "rules": [{"materialA": "steel", "materialB": "stone", "particleType": "sparks", "threshold": -1},
+                  {"materialA": "steel", "materialB": "steel", "particleType": "smoke"},
+                  {"materialA": "stone", "materialB": "glass", "particleType": "sparks"}],
+        "budget": {"capacity": 0}})"),
+              (std::vector<std::string>{"particleTypes[0].radus", "particleTypes[0].lifetime",
+                                        "particleTypes[0].drag", "rules[0].threshold",
+                                        "rules[1].particleType", "rules[2].materialB", "budget.capacity"}));
+    // A bad element keeps the indices of the ones after it, and what it breaks is reported once.
+    EXPECT_EQ(PathsOf(R"({"materials": ["a"], "particleTypes": [3, {"name": "p", "radius": -1}]})"),
+              (std::vector<std::string>{"particleTypes[0]", "particleTypes[1].radius"}));
+}
+
+// Every number has a range that keeps the simulation finite and its cost bounded (docs/effects-config.md).
+TEST(EffectsJson, HugeNumbersAreOutOfRange)
+{
+    auto problemsOf = [](const std::string& particle, const std::string& rule)
+    {
+        try
+        {
+            LoadEffectsString(
+                R"({"materials": ["a"], "particleTypes": [{"name": "p")" + particle +
+                    R"(}], "rules": [{"materialA": "a", "materialB": "a", "particleType": "p")" + rule +
+                    "}]}",
+                "fx.json");
+        }
+        catch (const InputError& error)
+        {
+            return error.Diagnostics();
+        }
+        return std::vector<Diagnostic>{};
+    };
+    auto has = [](const std::vector<Diagnostic>& problems, const std::string& path, const std::string& part)
+    {
+        for (const Diagnostic& problem : problems)
+        {
+            if (problem.path == path && problem.message.find(part) != std::string::npos)
+            {
+                return true;
+            }
+        }
+        return false;
+    };
+    EXPECT_TRUE(has(problemsOf(R"(, "radius": 3e9)", ""), "particleTypes[0].radius",
+                    "expected a number > 0 and <= 10, found 3e+09"));
+    const auto extremes = problemsOf(R"(, "gravityScale": 3.4e38, "normalSpeed": -3.4e38, "spread": 3.4e38,
+        "inheritA": 3.4e38, "inheritB": -3.4e38, "slipFactor": 3.4e38, "drag": 1e9, "lifetime": 1e9,
+        "lifeFromIntensity": 1e9, "friction": 1e9, "density": 1e9, "sizeStart": 1e9, "sizeEnd": 1e9,
+        "streak": 1e9)",
+                                     R"(, "ratePerIntensity": 1e9, "maxRate": 1e9, "threshold": 1e9,
+        "scrapeEndDelay": 1e9, "impactThreshold": 1e9, "burstPerSpeed": 1e9, "burstMax": 1e9,
+        "intensity": {"impulseWeight": 1e9})");
+    for (const char* field :
+         {"gravityScale", "normalSpeed", "spread", "inheritA", "inheritB", "slipFactor", "drag", "lifetime",
+          "lifeFromIntensity", "friction", "density", "sizeStart", "sizeEnd", "streak"})
+    {
+        EXPECT_TRUE(has(extremes, std::string("particleTypes[0].") + field, "expected a number")) << field;
+    }
+    for (const char* field : {"ratePerIntensity", "maxRate", "threshold", "scrapeEndDelay", "impactThreshold",
+                              "burstPerSpeed", "burstMax", "intensity.impulseWeight"})
+    {
+        EXPECT_TRUE(has(extremes, std::string("rules[0].") + field, "expected a number")) << field;
+    }
+    EXPECT_TRUE(has(extremes, "rules[0].maxRate", "between 0 and 1e+05, found 1e+09"));
+    EXPECT_EQ(extremes.size(), 22U);
+    // Generous for real use: the bounds themselves are fine.
+    EXPECT_TRUE(problemsOf(R"(, "radius": 10, "gravityScale": -100, "normalSpeed": 1000, "lifetime": 3600)",
+                           R"(, "ratePerIntensity": 1e6, "maxRate": 1e5, "burstMax": 1e5)")
+                    .empty());
+}
+
 TEST(EffectsJson, MalformedJsonHasLineAndColumn)
 {
     try

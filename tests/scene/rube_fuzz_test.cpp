@@ -210,26 +210,30 @@ std::string ExtremeWorld(std::mt19937& random)
         return nlohmann::json(value);
     };
     auto coordinate = [&]() { return pick({0.0, 1.0, -1.0, 999999.0, -999999.0, 1e-6, 0.5}); };
-    auto big = [&]() { return pick({0.0, 1.0, 3e38, 1e30, 1e-30, 100.0}); };
+    // The top of each range (docs/rube.md), or small values.
+    auto upTo = [&](double max) { return pick({0.0, 1.0, 1e-30, 0.5 * max, max}); };
+    auto speed = [&]() { return pick({0.0, 1.0, -1.0, 10000.0, -10000.0, 1e-6}); };
     auto vec = [&]() { return nlohmann::json{{"x", coordinate()}, {"y", coordinate()}}; };
-    nlohmann::json world = {{"gravity", vec()}, {"subStepping", random() % 2 == 0}};
+    auto velocity = [&]() { return nlohmann::json{{"x", speed()}, {"y", speed()}}; };
+    nlohmann::json world = {{"gravity", velocity()}, {"subStepping", random() % 2 == 0}};
     const int bodies = 2 + static_cast<int>(random() % 4);
     for (int b = 0; b < bodies; ++b)
     {
         nlohmann::json body = {{"type", static_cast<int>(random() % 3)},
                                {"position", vec()},
                                {"angle", coordinate()},
-                               {"linearVelocity", vec()},
-                               {"angularVelocity", coordinate()},
+                               {"linearVelocity", velocity()},
+                               {"angularVelocity", speed()},
                                {"awake", true},
-                               {"linearDamping", big()},
-                               {"angularDamping", big()},
-                               {"gravityScale", coordinate()},
+                               {"linearDamping", upTo(1e3)},
+                               {"angularDamping", upTo(1e3)},
+                               {"gravityScale", pick({0.0, 1.0, -1000.0, 1000.0})},
                                {"bullet", random() % 2 == 0}};
         const int fixtures = 1 + static_cast<int>(random() % 3);
         for (int f = 0; f < fixtures; ++f)
         {
-            nlohmann::json fixture = {{"density", big()}, {"friction", big()}, {"restitution", big()}};
+            nlohmann::json fixture = {
+                {"density", upTo(1e6)}, {"friction", upTo(1e3)}, {"restitution", upTo(10.0)}};
             const double scale =
                 pick({0.003, 1.0, 1000.0, 333333.0}).get<double>() * static_cast<double>(1 + random() % 3);
             switch (random() % 3)
@@ -262,20 +266,20 @@ std::string ExtremeWorld(std::mt19937& random)
                                 {"anchorA", vec()},
                                 {"anchorB", vec()},
                                 {"enableMotor", true},
-                                {"motorSpeed", coordinate()},
-                                {"maxMotorTorque", big()},
-                                {"maxMotorForce", big()},
-                                {"maxForce", big()},
-                                {"maxTorque", big()},
-                                {"frequency", big()},
-                                {"dampingRatio", big()},
-                                {"springFrequency", big()},
-                                {"springDampingRatio", big()},
+                                {"motorSpeed", speed()},
+                                {"maxMotorTorque", upTo(1e12)},
+                                {"maxMotorForce", upTo(1e12)},
+                                {"maxForce", upTo(1e12)},
+                                {"maxTorque", upTo(1e12)},
+                                {"frequency", upTo(1e4)},
+                                {"dampingRatio", upTo(1e3)},
+                                {"springFrequency", upTo(1e4)},
+                                {"springDampingRatio", upTo(1e3)},
                                 {"length", pick({0.0, 1.0, 999999.0})},
                                 {"maxLength", pick({0.0, 5.0})},
                                 {"lengthA", 1.0},
                                 {"lengthB", 1.0},
-                                {"ratio", pick({1e-30, 1.0, 999999.0})},
+                                {"ratio", pick({1e-30, 1.0, 1000.0})},
                                 {"target", vec()},
                                 {"enableLimit", true},
                                 {"lowerLimit", -1.0},

@@ -3,7 +3,8 @@
 // One PNG file, a numbered PNG sequence, or a video that ffmpeg encodes from raw frames piped to its
 // standard input. Every kind leaves either complete output or nothing: PNG files are written to a
 // temporary name and renamed; a sequence that fails midway removes the frames it wrote; ffmpeg writes
-// to a temporary file that is renamed only when it exits with success.
+// to a temporary file that is renamed only when ffmpeg exits with success and ffprobe finds every frame
+// in it (ffmpeg may exit 0 after "No space left on device" and leave a video without its index).
 #pragma once
 
 #include <cstdio>
@@ -69,27 +70,53 @@ private:
 class VideoSink final : public FrameSink
 {
 public:
-    /// Throws std::runtime_error "ffmpeg not found: install ffmpeg to write .mp4/.gif" when ffmpeg is not
-    /// on $PATH, std::invalid_argument for odd MP4 sizes, InputError naming `file` when ffmpeg cannot
-    /// start. While the sink lives, SIGPIPE is ignored (so a dying ffmpeg shows as a write error, not a
-    /// killed process); the previous disposition is restored after.
-    VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps);
+    /// Throws std::runtime_error "ffmpeg not found: install ffmpeg to write .mp4/.gif" when ffmpeg (or
+    /// "ffprobe not found: ..." when ffprobe, which checks the result) is not on $PATH,
+    /// std::invalid_argument for odd MP4 sizes, InputError naming `file` when ffmpeg cannot start. While
+    /// the sink lives, SIGPIPE is ignored (so a dying ffmpeg shows as a write error, not a killed
+    /// process); the previous disposition is restored after.
+    ///
+    /// `temporary` empty: ffmpeg writes to a hidden temporary file beside `file`, which Finish() renames
+    /// to `file`. Otherwise ffmpeg writes to `temporary` (the caller's, e.g. one of several outputs
+    /// committed together) and Finish() checks it and leaves it there; `file` only names the output in
+    /// messages. Either way a sink that fails or is destroyed unfinished removes what ffmpeg wrote.
+    VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps,
+              std::filesystem::path temporary = {});
     ~VideoSink() override;
     /// Throws InputError naming the file when ffmpeg stopped taking frames.
     void Write(const CairoRenderer& frame) override;
-    /// Waits for ffmpeg; throws InputError naming the file (and leaves none) when it failed.
+    /// Waits for ffmpeg, then checks the video with ffprobe: it must hold every frame written and last
+    /// at least their time (frames / fps, less one frame). Throws InputError naming the file (and leaves
+    /// none) when ffmpeg failed or the video is incomplete.
     void Finish() override;
 
 private:
     void Abort();
+    void CheckComplete();
 
     std::filesystem::path m_file;
     std::filesystem::path m_temporary;
+    bool m_rename = true;    ///< Finish renames m_temporary to m_file
+    bool m_finished = false; ///< Finish succeeded: the destructor leaves m_temporary
     int m_width;
     int m_height;
+    double m_fps;
+    long long m_frames = 0;
     std::FILE* m_pipe = nullptr;
     void (*m_previousSigpipe)(int) = nullptr;
 };
+
+/// What ffprobe finds in a video file: its video stream's packets (one per frame) and duration.
+struct VideoProbe
+{
+    bool ok = false;      ///< ffprobe read the file
+    long long frames = 0; ///< packets of the first video stream
+    double seconds = 0.0; ///< the container's duration
+    std::string message;  ///< ffprobe's complaint when !ok
+};
+
+/// Runs ffprobe (found on $PATH) on `file`. Throws std::runtime_error when ffprobe is not there.
+VideoProbe ProbeVideo(const std::filesystem::path& file);
 
 /// A sink for `kind` writing to `path`.
 std::unique_ptr<FrameSink> MakeSink(const std::filesystem::path& path, OutputKind kind, int width, int height,

@@ -114,6 +114,9 @@ public:
     std::vector<SceneJoint> joints;     ///< file order
     std::vector<SceneImage> images;     ///< file order
     CustomProperties properties;        ///< the world's own custom properties
+    /// What loaded but may not be what the file meant (Diagnostic::warning): unknown keys (with the nearest
+    /// known one), polygon vertices Box2D drops (welded, or not on the convex hull).
+    std::vector<Diagnostic> warnings;
 
     /// First object with this name, or nullptr.
     const SceneBody* FindBody(std::string_view name) const;
@@ -134,17 +137,20 @@ Scene LoadRubeFile(const std::filesystem::path& path);
 /// Same, from text; `fileName` is only used in diagnostics.
 Scene LoadRubeString(std::string_view json, std::string_view fileName);
 
-/// Checks a RUBE file without keeping the world: every problem, or an empty list.
-/// `counts` (optional) receives bodies, fixtures, joints and images found.
+/// Checks a RUBE file without keeping the world: every error, or an empty list when the file loads.
+/// `counts` (optional) receives bodies, fixtures, joints and images found; `warnings` (optional) the
+/// warnings (Scene::warnings), which do not stop the file from loading.
 struct SceneCounts
 {
     int bodies = 0, fixtures = 0, joints = 0, images = 0;
 };
-std::vector<Diagnostic> ValidateRubeFile(const std::filesystem::path& path, SceneCounts* counts = nullptr);
+std::vector<Diagnostic> ValidateRubeFile(const std::filesystem::path& path, SceneCounts* counts = nullptr,
+                                         std::vector<Diagnostic>* warnings = nullptr);
 
 /// Same, from text; `fileName` is only used in diagnostics.
 std::vector<Diagnostic> ValidateRubeString(std::string_view json, std::string_view fileName,
-                                           SceneCounts* counts = nullptr);
+                                           SceneCounts* counts = nullptr,
+                                           std::vector<Diagnostic>* warnings = nullptr);
 
 /// RUBE JSON of the scene's current world (positions and velocities as they are now).
 std::string SaveRubeString(const Scene& scene);

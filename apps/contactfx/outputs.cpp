@@ -1,0 +1,447 @@
+#include "outputs.h"
+
+#include "contactfx/error.h"
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <map>
+#include <set>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <utility>
+
+namespace cfx::cli
+{
+
+namespace
+{
+
+namespace fs = std::filesystem;
+
+std::string Quoted(const fs::path& path)
+{
+    return "\"" + path.string() + "\"";
+}
+
+// The path written to: absolute, with symbolic links resolved as far as the path exists, so that an
+// output given through a link replaces the file the link points at and leaves the link.
+fs::path RealPath(const fs::path& file)
+{
+    std::error_code error;
+    fs::path real = fs::weakly_canonical(fs::absolute(file, error), error);
+    return error ? fs::absolute(file) : real;
+}
+
+std::string Strerror(int error)
+{
+    return std::strerror(error != 0 ? error : EIO);
+}
+
+fs::path Beside(const fs::path& real, const char* what)
+{
+    static std::atomic<unsigned> counter{0};
+    return real.parent_path() / ("." + real.filename().string() + what + std::to_string(::getpid()) + "-" +
+                                 std::to_string(counter.fetch_add(1)));
+}
+
+// SIGINT, SIGTERM, SIGHUP while outputs are pending: stop at the next write or Check, which unwinds and
+// removes the temporary files.
+volatile std::sig_atomic_t g_signal = 0;
+int g_handlersInstalled = 0;
+struct sigaction g_previous[3];
+constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+
+extern "C" void OnSignal(int signal)
+{
+    g_signal = signal;
+}
+
+void InstallHandlers()
+{
+    if (g_handlersInstalled++ > 0)
+    {
+        return;
+    }
+    g_signal = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        struct sigaction action
+        {
+        };
+        action.sa_handler = &OnSignal;
+        action.sa_flags = SA_RESTART; // reads and writes elsewhere go on; the loops check the flag
+        sigemptyset(&action.sa_mask);
+        ::sigaction(kSignals[i], &action, &g_previous[i]);
+    }
+}
+
+void RestoreHandlers()
+{
+    if (--g_handlersInstalled > 0)
+    {
+        return;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+        ::sigaction(kSignals[i], &g_previous[i], nullptr);
+    }
+}
+
+} // namespace
+
+std::string OutputProblem(const fs::path& file, const fs::path& given)
+{
+    if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
+    {
+        return "names no file";
+    }
+    struct stat info = {};
+    if (::stat(file.c_str(), &info) == 0)
+    {
+        if (S_ISDIR(info.st_mode))
+        {
+            return "is a directory, not a file";
+        }
+        if (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode))
+        {
+            return "is a device, not a regular file: give a file to write";
+        }
+        if (S_ISFIFO(info.st_mode))
+        {
+            return "is a FIFO, not a regular file: give a file to write";
+        }
+        if (!S_ISREG(info.st_mode))
+        {
+            return "is not a regular file";
+        }
+        // Permission bits, not access(): root may write a mode 444 file, but its owner meant it to stay.
+        if ((info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
+        {
+            char mode[8];
+            std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(info.st_mode & 07777));
+            return std::string("is read-only (mode ") + mode + "): not replaced";
+        }
+        if (::access(file.c_str(), W_OK) != 0)
+        {
+            return "cannot be written: " + Strerror(errno);
+        }
+    }
+    else if (errno != ENOENT)
+    {
+        return "cannot be written: " + Strerror(errno);
+    }
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
+    const fs::path shown = named.parent_path().empty() ? fs::path(".") : named.parent_path();
+    struct stat folderInfo = {};
+    if (::stat(folder.c_str(), &folderInfo) != 0)
+    {
+        return "folder " + Quoted(shown) + " does not exist";
+    }
+    if (!S_ISDIR(folderInfo.st_mode))
+    {
+        return Quoted(shown) + " is not a folder";
+    }
+    if ((folderInfo.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 ||
+        ::access(folder.c_str(), W_OK | X_OK) != 0)
+    {
+        return "folder " + Quoted(shown) + " is not writable";
+    }
+    return {};
+}
+
+OutputFiles::OutputFiles() = default;
+
+OutputFiles::~OutputFiles()
+{
+    if (!m_committed)
+    {
+        RemoveTemporaries();
+    }
+    if (m_prepared)
+    {
+        RestoreHandlers();
+    }
+}
+
+void OutputFiles::AddInput(const fs::path& file)
+{
+    if (!file.empty())
+    {
+        m_inputs.push_back(file);
+    }
+}
+
+OutputFiles::Handle OutputFiles::Add(const std::string& flag, const fs::path& file)
+{
+    Output output;
+    output.flag = flag;
+    output.target = file;
+    output.real = RealPath(file);
+    m_outputs.push_back(std::move(output));
+    return m_outputs.size() - 1;
+}
+
+void OutputFiles::Prepare()
+{
+    std::vector<Diagnostic> problems;
+    auto refuse = [&](const Output& output, const std::string& message) {
+        problems.push_back(Diagnostic{output.target.string(), output.flag, message});
+    };
+
+    // Inputs by path and, when they exist, by identity (hard links, other spellings).
+    std::map<std::string, fs::path> inputPaths;
+    std::map<std::pair<dev_t, ino_t>, fs::path> inputIds;
+    for (const fs::path& input : m_inputs)
+    {
+        inputPaths.emplace(RealPath(input).string(), input);
+        struct stat info = {};
+        if (::stat(input.c_str(), &info) == 0)
+        {
+            inputIds.emplace(std::make_pair(info.st_dev, info.st_ino), input);
+        }
+    }
+    std::map<std::string, const Output*> seen;
+    for (const Output& output : m_outputs)
+    {
+        if (output.target.empty())
+        {
+            refuse(output, "names no file");
+            continue;
+        }
+        const std::string problem = OutputProblem(output.real, output.target);
+        if (!problem.empty())
+        {
+            refuse(output, problem);
+            continue;
+        }
+        const fs::path* input = nullptr;
+        if (auto found = inputPaths.find(output.real.string()); found != inputPaths.end())
+        {
+            input = &found->second;
+        }
+        struct stat info = {};
+        if (input == nullptr && ::stat(output.real.c_str(), &info) == 0)
+        {
+            if (auto found = inputIds.find({info.st_dev, info.st_ino}); found != inputIds.end())
+            {
+                input = &found->second;
+            }
+        }
+        if (input != nullptr)
+        {
+            refuse(output, "is the input file " + Quoted(*input) + " of this command: not overwritten");
+            continue;
+        }
+        auto [other, inserted] = seen.emplace(output.real.string(), &output);
+        if (!inserted)
+        {
+            refuse(output, "is also the output of " + other->second->flag + " (" +
+                               Quoted(other->second->target) + "): give each output its own file");
+        }
+    }
+    if (!problems.empty())
+    {
+        throw InputError(std::move(problems));
+    }
+
+    m_prepared = true;
+    InstallHandlers();
+    for (Output& output : m_outputs)
+    {
+        int descriptor = -1;
+        for (int attempt = 0; attempt < 16 && descriptor < 0; ++attempt)
+        {
+            output.temporary = Beside(output.real, ".tmp-");
+            descriptor = ::open(output.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (descriptor < 0 && errno != EEXIST)
+            {
+                const int error = errno;
+                output.temporary.clear();
+                Fail(output, "cannot write: " + Strerror(error));
+            }
+        }
+        if (descriptor < 0)
+        {
+            output.temporary.clear();
+            Fail(output, "cannot write: no free temporary file name");
+        }
+        ::close(descriptor);
+    }
+}
+
+const fs::path& OutputFiles::Temporary(Handle output) const
+{
+    return m_outputs.at(output).temporary;
+}
+
+const fs::path& OutputFiles::Target(Handle output) const
+{
+    return m_outputs.at(output).target;
+}
+
+void OutputFiles::Fail(const Output& output, const std::string& message) const
+{
+    throw InputError(output.target.string(), output.flag, message);
+}
+
+void OutputFiles::CheckInterrupted() const
+{
+    if (g_signal != 0)
+    {
+        throw std::runtime_error(std::string("interrupted by ") + ::strsignal(g_signal) +
+                                 ": no output written");
+    }
+}
+
+void OutputFiles::Write(Handle handle, std::string_view bytes)
+{
+    CheckInterrupted();
+    Output& output = m_outputs.at(handle);
+    CloseStream(output, false);
+    std::FILE* file = std::fopen(output.temporary.c_str(), "wb");
+    if (file == nullptr)
+    {
+        Fail(output, "cannot write: " + Strerror(errno));
+    }
+    errno = 0;
+    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    ok = ok && std::fflush(file) == 0;
+    const int error = errno;
+    ok = std::fclose(file) == 0 && ok;
+    if (!ok)
+    {
+        Fail(output, "cannot write: " + Strerror(error != 0 ? error : errno));
+    }
+}
+
+void OutputFiles::Append(Handle handle, std::string_view bytes)
+{
+    Output& output = m_outputs.at(handle);
+    if (output.stream == nullptr)
+    {
+        CheckInterrupted();
+        output.stream = std::fopen(output.temporary.c_str(), "wb");
+        if (output.stream == nullptr)
+        {
+            Fail(output, "cannot write: " + Strerror(errno));
+        }
+        std::setvbuf(output.stream, nullptr, _IOFBF, 1 << 16);
+    }
+    errno = 0;
+    if (std::fwrite(bytes.data(), 1, bytes.size(), output.stream) != bytes.size())
+    {
+        const int error = errno;
+        CloseStream(output, false);
+        Fail(output, "cannot write: " + Strerror(error));
+    }
+}
+
+void OutputFiles::CloseStream(Output& output, bool check)
+{
+    if (output.stream == nullptr)
+    {
+        return;
+    }
+    errno = 0;
+    bool ok = std::fflush(output.stream) == 0;
+    const int error = errno;
+    ok = std::fclose(output.stream) == 0 && ok;
+    output.stream = nullptr;
+    if (check && !ok)
+    {
+        Fail(output, "cannot write: " + Strerror(error != 0 ? error : errno));
+    }
+}
+
+void OutputFiles::Commit()
+{
+    CheckInterrupted();
+    for (Output& output : m_outputs)
+    {
+        CloseStream(output, true);
+        // On disk before it replaces anything: after a crash, the old file or the whole new one.
+        const int descriptor = ::open(output.temporary.c_str(), O_RDONLY | O_CLOEXEC);
+        if (descriptor < 0 || ::fsync(descriptor) != 0)
+        {
+            const int error = errno;
+            if (descriptor >= 0)
+            {
+                ::close(descriptor);
+            }
+            Fail(output, "cannot write: " + Strerror(error));
+        }
+        ::close(descriptor);
+        // Something may have taken the target's place while the command ran.
+        const std::string problem = OutputProblem(output.real, output.target);
+        if (!problem.empty())
+        {
+            Fail(output, problem);
+        }
+    }
+    // Rename in order; on failure put back what was replaced (kept as hard links) and remove what was new.
+    std::vector<fs::path> backups(m_outputs.size());
+    std::size_t done = 0;
+    for (; done < m_outputs.size(); ++done)
+    {
+        Output& output = m_outputs[done];
+        struct stat existing = {};
+        if (::stat(output.real.c_str(), &existing) == 0)
+        {
+            ::chmod(output.temporary.c_str(), existing.st_mode & 07777); // the replaced file's mode
+            const fs::path backup = Beside(output.real, ".old-");
+            if (::link(output.real.c_str(), backup.c_str()) == 0)
+            {
+                backups[done] = backup;
+            }
+        }
+        if (::rename(output.temporary.c_str(), output.real.c_str()) != 0)
+        {
+            const int error = errno;
+            if (!backups[done].empty())
+            {
+                ::unlink(backups[done].c_str());
+            }
+            for (std::size_t i = done; i-- > 0;)
+            {
+                if (!backups[i].empty())
+                {
+                    ::rename(backups[i].c_str(), m_outputs[i].real.c_str());
+                }
+                else
+                {
+                    ::unlink(m_outputs[i].real.c_str());
+                }
+                m_outputs[i].temporary.clear(); // renamed: nothing of it left to remove
+            }
+            Fail(output, "cannot write: " + Strerror(error));
+        }
+        output.temporary.clear();
+    }
+    for (const fs::path& backup : backups)
+    {
+        if (!backup.empty())
+        {
+            ::unlink(backup.c_str());
+        }
+    }
+    m_committed = true;
+}
+
+void OutputFiles::RemoveTemporaries()
+{
+    for (Output& output : m_outputs)
+    {
+        CloseStream(output, false);
+        if (!output.temporary.empty())
+        {
+            ::unlink(output.temporary.c_str());
+            output.temporary.clear();
+        }
+    }
+}
+
+} // namespace cfx::cli

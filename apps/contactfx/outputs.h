@@ -1,0 +1,99 @@
+// contactfx command line: the output files of one command, checked before it simulates and committed
+// together after it succeeded, or not at all.
+//
+// Every output flag (--stats, --events, --plot, render --out and its frames, preset --out) registers its
+// path here. Prepare() checks them all before anything is simulated and reports every problem at once:
+// - the path names a file in a folder that exists and can be written to;
+// - an existing target is a regular file (not a directory, device, FIFO or socket: `--stats /dev/full`
+//   and `--stats /dev/null` are refused rather than replaced by a regular file) with a write permission
+//   bit set (a mode 444 file is refused even for root, who could write it);
+// - no target is one of the command's input files (`run scene.json --stats scene.json`) or another
+//   output of the same command.
+// It then creates an empty hidden temporary file beside each target (".NAME.tmp-PID-N"), exclusively.
+// Outputs are written to their temporary files while the
+// command runs (a stream for --events, so memory stays flat). Commit() checks the targets again, then
+// renames every temporary file over its target (a replaced file keeps its mode); when a rename fails, the
+// targets already renamed get their previous files back (kept as hard links until then). An OutputFiles
+// destroyed before Commit() removes its temporary files: after a failed command no output of it is left, and
+// pre-existing files are untouched. SIGINT, SIGTERM and SIGHUP remove the temporary files too.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cfx::cli
+{
+
+class OutputFiles
+{
+public:
+    /// One registered output; an index into this set.
+    using Handle = std::size_t;
+
+    OutputFiles();
+    ~OutputFiles();
+    OutputFiles(const OutputFiles&) = delete;
+    OutputFiles& operator=(const OutputFiles&) = delete;
+
+    /// An input file of the command: no output may be the same file. Missing files are ignored (reading
+    /// them fails on its own).
+    void AddInput(const std::filesystem::path& file);
+
+    /// Registers `file`, given by option `flag` ("--stats"). Nothing is checked until Prepare().
+    Handle Add(const std::string& flag, const std::filesystem::path& file);
+
+    /// Checks every registered output (see the file comment) and creates their temporary files. Throws
+    /// InputError with one diagnostic per problem ("FILE: --flag: message"), leaving nothing behind.
+    void Prepare();
+
+    /// The temporary file of `output`, for a writer that opens it itself (ffmpeg).
+    const std::filesystem::path& Temporary(Handle output) const;
+    /// The target as given.
+    const std::filesystem::path& Target(Handle output) const;
+
+    /// Replaces the contents of `output`'s temporary file by `bytes`. Throws InputError naming the
+    /// target on failure (a full disk, a file size limit).
+    void Write(Handle output, std::string_view bytes);
+
+    /// Appends `bytes` to `output`'s temporary file through a buffered stream. Throws InputError naming
+    /// the target when writing fails.
+    void Append(Handle output, std::string_view bytes);
+
+    /// Throws std::runtime_error when SIGINT, SIGTERM or SIGHUP arrived since Prepare(): long loops call
+    /// it so that an interrupted command unwinds and leaves no file.
+    void CheckInterrupted() const;
+
+    /// Flushes and syncs every temporary file, checks the targets again, and renames them all into
+    /// place, or none (see the file comment). Throws InputError naming the file that failed.
+    void Commit();
+
+private:
+    struct Output
+    {
+        std::string flag;
+        std::filesystem::path target;    ///< as given
+        std::filesystem::path real;      ///< where it is written: symbolic links resolved
+        std::filesystem::path temporary; ///< empty until Prepare()
+        std::FILE* stream = nullptr;     ///< Append()'s stream, open until Commit()
+    };
+
+    [[noreturn]] void Fail(const Output& output, const std::string& message) const;
+    void CloseStream(Output& output, bool check);
+    void RemoveTemporaries();
+
+    std::vector<std::filesystem::path> m_inputs;
+    std::vector<Output> m_outputs;
+    bool m_prepared = false;
+    bool m_committed = false;
+};
+
+/// Why `file` cannot be an output, or an empty string when it can: it exists and is not a regular file,
+/// or has no write permission bit, or cannot be written; or its folder is missing or not writable.
+/// Messages name the folder as in `given` (the path as the user wrote it) when that is not empty.
+std::string OutputProblem(const std::filesystem::path& file, const std::filesystem::path& given = {});
+
+} // namespace cfx::cli

@@ -1,0 +1,363 @@
+// The field tables of the effects configuration (contactfx/config_fields.h).
+//
+// One row per member: name, member, unit, range, doc line, enum names, text rule, relation, editor step.
+// Ranges are wide enough for any real effect and narrow enough that nothing derived from them (start
+// speeds, positions, particle counts per step, the float-to-int casts of the emitter and the particle
+// grid) can overflow or make a step's cost unbounded. The order of each table is the order in which
+// fields are checked and read (enums after the plain fields, as the reader has always reported them).
+#include "contactfx/config_fields.h"
+
+#include <array>
+#include <cmath>
+
+namespace cfx
+{
+
+bool FieldRange::Contains(float value) const
+{
+    const bool aboveMin = minExclusive ? value > min : value >= min;
+    return std::isfinite(value) && aboveMin && value <= max;
+}
+
+namespace
+{
+
+template <typename T> struct MemberOf;
+template <typename S, typename T> struct MemberOf<T S::*>
+{
+    using Struct = S;
+    using Type = T;
+};
+
+// The get/set pair of an enum member.
+template <auto Member> constexpr auto Choice()
+{
+    using S = typename MemberOf<decltype(Member)>::Struct;
+    using E = typename MemberOf<decltype(Member)>::Type;
+    return ChoiceMember<S>{[](const S& s) { return static_cast<int>(s.*Member); },
+                           [](S& s, int value) { s.*Member = static_cast<E>(value); }};
+}
+
+constexpr FieldRange kUnit{0.0f, 1.0f};
+
+constexpr std::string_view kBackends[] = {"pool", "body"};
+constexpr std::string_view kEmissionModes[] = {"rate", "perStep"};
+constexpr std::string_view kPlacements[] = {"surface", "tutorialDrop"};
+constexpr std::string_view kSpeedModes[] = {"full", "tangential"};
+constexpr std::string_view kFrictionMixes[] = {"product", "sqrt", "min", "max", "mean"};
+constexpr std::string_view kManifoldPoints[] = {"first", "all"};
+constexpr std::string_view kBodyTypeFilters[] = {"any", "static", "kinematic", "dynamic"};
+constexpr std::string_view kRecyclePolicies[] = {"oldest", "lowestLife"};
+
+using P = ParticleTypeDef;
+const std::array kParticleTypeFields{
+    Field<P>{.name = "name", .member = &P::name, .doc = "what rules refer to", .text = TextRule::name},
+    Field<P>{.name = "lifeBase",
+             .member = &P::lifeBase,
+             .range = kUnit,
+             .doc = "start life = clamp(lifeBase + lifeFromIntensity * intensity, 0, 1)",
+             .step = 0.01f},
+    Field<P>{.name = "lifeFromIntensity",
+             .member = &P::lifeFromIntensity,
+             .unit = "per unit of intensity",
+             .range = {0.0f, 1000.0f},
+             .doc = "the tutorial uses 0.3 with lifeBase 0",
+             .step = 0.01f},
+    Field<P>{.name = "lifetime",
+             .member = &P::lifetime,
+             .unit = "s",
+             .range = {0.0f, 3600.0f, true},
+             .doc = "time for life to fall from 1 to 0",
+             .step = 0.01f},
+    Field<P>{.name = "inheritA",
+             .member = &P::inheritA,
+             .range = {-10.0f, 10.0f},
+             .doc = "fraction of the velocity of the body whose material is the rule's `materialA`, at the "
+                    "contact point",
+             .step = 0.01f},
+    Field<P>{.name = "inheritB",
+             .member = &P::inheritB,
+             .range = {-10.0f, 10.0f},
+             .doc = "the same for the body whose material is the rule's `materialB`",
+             .step = 0.01f},
+    Field<P>{.name = "slipFactor",
+             .member = &P::slipFactor,
+             .range = {-10.0f, 10.0f},
+             .doc = "fraction of the other body's sliding velocity over the surface (sparks thrown along a "
+                    "scrape, dirt thrown back by a spinning wheel)",
+             .step = 0.01f},
+    Field<P>{.name = "normalSpeed",
+             .member = &P::normalSpeed,
+             .unit = "m/s",
+             .range = {-1000.0f, 1000.0f},
+             .doc = "speed away from the surface",
+             .step = 0.05f},
+    Field<P>{.name = "spread",
+             .member = &P::spread,
+             .unit = "m/s",
+             .range = {0.0f, 1000.0f},
+             .doc = "uniform random in [-spread, spread] added per axis",
+             .step = 0.05f},
+    Field<P>{.name = "gravityScale",
+             .member = &P::gravityScale,
+             .range = {-100.0f, 100.0f},
+             .doc = "times the world's gravity; negative rises",
+             .step = 0.01f},
+    Field<P>{.name = "drag",
+             .member = &P::drag,
+             .unit = "1/s",
+             .range = {0.0f, 1000.0f},
+             .doc = "Box2D's linear damping: v *= 1 / (1 + dt * drag)",
+             .step = 0.05f},
+    Field<P>{.name = "collide",
+             .member = &P::collide,
+             .doc = "collide with the world's fixtures (never with other particles)"},
+    Field<P>{.name = "radius",
+             .member = &P::radius,
+             .unit = "m",
+             .range = {0.0f, 10.0f, true},
+             .doc = "collision radius",
+             .step = 0.001f},
+    Field<P>{
+        .name = "restitution", .member = &P::restitution, .range = kUnit, .doc = "bounce", .step = 0.01f},
+    Field<P>{.name = "friction",
+             .member = &P::friction,
+             .range = {0.0f, 1000.0f},
+             .doc = "Coulomb friction on each hit",
+             .step = 0.01f},
+    Field<P>{.name = "categoryBits",
+             .member = &P::categoryBits,
+             .range = {0.0f, 65535.0f},
+             .doc = "like `b2Filter`: a fixture is hit when its mask has these bits and its category is in "
+                    "`maskBits`"},
+    Field<P>{.name = "maskBits",
+             .member = &P::maskBits,
+             .range = {0.0f, 65535.0f},
+             .doc = "the fixture categories particles of this type hit"},
+    Field<P>{.name = "density",
+             .member = &P::density,
+             .unit = "kg/m²",
+             .range = {0.0f, 1.0e6f, true},
+             .doc = "body backend only",
+             .step = 0.05f},
+    Field<P>{.name = "colorStart",
+             .member = &P::colorStart,
+             .range = kUnit,
+             .doc = "colour at birth, [r, g, b] or [r, g, b, a]; the drawn opacity is alpha times life"},
+    Field<P>{.name = "colorEnd", .member = &P::colorEnd, .range = kUnit, .doc = "colour at death"},
+    Field<P>{.name = "sizeStart",
+             .member = &P::sizeStart,
+             .unit = "m",
+             .range = {0.0f, 100.0f, true},
+             .doc = "drawn diameter at birth",
+             .step = 0.005f},
+    Field<P>{.name = "sizeEnd",
+             .member = &P::sizeEnd,
+             .unit = "m",
+             .range = {0.0f, 100.0f, true},
+             .doc = "drawn diameter at death",
+             .step = 0.005f},
+    Field<P>{.name = "streak",
+             .member = &P::streak,
+             .unit = "s",
+             .range = {0.0f, 10.0f},
+             .doc = "draw as a line along the velocity covering this much motion (sparks); 0 draws a soft "
+                    "round point",
+             .step = 0.001f},
+    Field<P>{.name = "backend",
+             .member = Choice<&P::backend>(),
+             .doc = "a light pool particle, or a Box2D body (the tutorial's way; pushes what it hits)",
+             .choices = kBackends},
+};
+
+using I = IntensityModel;
+const std::array kIntensityFields{
+    Field<I>{.name = "impulseWeight",
+             .member = &I::impulseWeight,
+             .unit = "1/N",
+             .range = {0.0f, 1000.0f},
+             .doc = "intensity = speed * friction * (1 + impulseWeight * normal force); the normal force is "
+                    "the whole body pair's",
+             .step = 0.001f},
+    Field<I>{.name = "speed",
+             .member = Choice<&I::speed>(),
+             .doc = "relative speed at the point, or only its part along the surface",
+             .choices = kSpeedModes},
+    Field<I>{.name = "friction",
+             .member = Choice<&I::friction>(),
+             .doc = "how the two frictions mix (`sqrt` is Box2D's)",
+             .choices = kFrictionMixes},
+    Field<I>{.name = "points",
+             .member = Choice<&I::points>(),
+             .doc = "which manifold points of each contact are sampled",
+             .choices = kManifoldPoints},
+};
+
+using R = RuleDef;
+const std::array kRuleFields{
+    Field<R>{.name = "materialA",
+             .member = &R::materialA,
+             .doc = "the pair's first material; the order does not matter, except that `inheritA` follows it",
+             .text = TextRule::material},
+    Field<R>{.name = "materialB",
+             .member = &R::materialB,
+             .doc = "the pair's second material (`inheritB` follows it)",
+             .text = TextRule::material},
+    Field<R>{.name = "particleType",
+             .member = &R::particleType,
+             .doc = "what is emitted",
+             .text = TextRule::particleType},
+    Field<R>{
+        .name = "intensity", .member = &R::intensity, .doc = "how a contact sample becomes an intensity"},
+    Field<R>{.name = "threshold",
+             .member = &R::threshold,
+             .range = {0.0f, 1.0e6f},
+             .doc = "intensities at or below it emit nothing (`rate`: the pair's intensity; `perStep`: each "
+                    "sample's)",
+             .step = 0.05f},
+    Field<R>{.name = "ratePerIntensity",
+             .member = &R::ratePerIntensity,
+             .unit = "1/s per unit",
+             .range = {0.0f, 1.0e6f},
+             .doc = "rate = ratePerIntensity * (intensity - threshold)",
+             .step = 0.5f},
+    Field<R>{.name = "maxRate",
+             .member = &R::maxRate,
+             .unit = "1/s",
+             .range = {0.0f, 1.0e5f},
+             .doc =
+                 "cap per body pair (with `burstMax`, what bounds the particles one pair can start per step)",
+             .step = 1.0f},
+    Field<R>{.name = "scrapeEndDelay",
+             .member = &R::scrapeEndDelay,
+             .unit = "s",
+             .range = {0.0f, 3600.0f},
+             .doc = "a scrape event ends after the intensity stayed at or below the threshold this long",
+             .step = 0.01f},
+    Field<R>{.name = "impactThreshold",
+             .member = &R::impactThreshold,
+             .unit = "m/s",
+             .range = {0.0f, 1.0e4f},
+             .doc = "approach speed along the normal at first touch that makes an impact event",
+             .step = 0.05f},
+    Field<R>{.name = "burstPerSpeed",
+             .member = &R::burstPerSpeed,
+             .unit = "per m/s",
+             .range = {0.0f, 1.0e4f},
+             .doc = "an impact bursts this many particles per m/s above `impactThreshold`",
+             .step = 0.1f},
+    Field<R>{.name = "burstMax",
+             .member = &R::burstMax,
+             .range = {0.0f, 1.0e5f},
+             .doc = "most particles one impact bursts",
+             .step = 1.0f},
+    Field<R>{.name = "emission",
+             .member = Choice<&R::emission>(),
+             .doc = "particles per second per body pair growing with its intensity (independent of the step "
+                    "rate and of how the surfaces are cut up), or one per sample per contact per step (the "
+                    "tutorial)",
+             .choices = kEmissionModes},
+    Field<R>{.name = "placement",
+             .member = Choice<&R::placement>(),
+             .doc = "outside both surfaces near the contact, or the tutorial's drop onto the static ground "
+                    "below (stepping aside from a wheel or body standing there); never inside a solid: with "
+                    "no free start near the contact the particle is not spawned (`spawn_rejected`)",
+             .choices = kPlacements},
+};
+
+using A = MaterialAssignment;
+const std::array kAssignmentFields{
+    Field<A>{.name = "material",
+             .member = &A::material,
+             .doc = "what matching fixtures get",
+             .text = TextRule::material},
+    Field<A>{.name = "bodyName",
+             .member = &A::bodyName,
+             .doc = "glob on the body's RUBE `name`: `*` any run of characters, `?` one character, anything "
+                    "else itself (case-sensitive); the whole name must match",
+             .text = TextRule::pattern},
+    Field<A>{.name = "fixtureName",
+             .member = &A::fixtureName,
+             .doc = "the same for the fixture's `name`",
+             .text = TextRule::pattern},
+    Field<A>{.name = "frictionAbove",
+             .member = &A::frictionAbove,
+             .range = {-1000.0f, 1000.0f},
+             .doc = "fixture friction > this (strict); absent: no bound",
+             .step = 0.01f},
+    Field<A>{.name = "frictionBelow",
+             .member = &A::frictionBelow,
+             .range = {-1000.0f, 1000.0f},
+             .doc = "fixture friction < this; when both bounds are given, it must exceed `frictionAbove`",
+             .greaterThan = "frictionAbove",
+             .step = 0.01f},
+    Field<A>{.name = "massAbove",
+             .member = &A::massAbove,
+             .unit = "kg",
+             .range = {-1.0e12f, 1.0e12f},
+             .doc =
+                 "the body's mass as Box2D computes it after loading (static and kinematic bodies weigh 0) "
+                 "> this",
+             .step = 0.1f},
+    Field<A>{.name = "massBelow",
+             .member = &A::massBelow,
+             .unit = "kg",
+             .range = {-1.0e12f, 1.0e12f},
+             .doc = "the body's mass < this; when both bounds are given, it must exceed `massAbove`",
+             .greaterThan = "massAbove",
+             .step = 0.1f},
+    Field<A>{.name = "bodyType",
+             .member = Choice<&A::bodyType>(),
+             .doc = "the body's type",
+             .choices = kBodyTypeFilters},
+};
+
+using B = ParticleBudget;
+const std::array kBudgetFields{
+    Field<B>{.name = "capacity",
+             .member = &B::capacity,
+             .range = {1.0f, 4.0e6f},
+             .doc = "hard cap on live particles",
+             .step = 256.0f},
+    Field<B>{.name = "recycle",
+             .member = Choice<&B::recycle>(),
+             .doc =
+                 "who makes room when full: the particle spawned first, or the one with the least time left",
+             .choices = kRecyclePolicies},
+    Field<B>{.name = "contacts",
+             .member = &B::contacts,
+             .range = {0.0f, 1.0e6f},
+             .doc =
+                 "touching contacts (and body pairs) room is made for at creation: with no more touching at "
+                 "once, neither the contact callbacks nor `Effects::Step` allocate",
+             .step = 64.0f},
+};
+
+} // namespace
+
+std::span<const Field<ParticleTypeDef>> ParticleTypeFields()
+{
+    return kParticleTypeFields;
+}
+
+std::span<const Field<RuleDef>> RuleFields()
+{
+    return kRuleFields;
+}
+
+std::span<const Field<IntensityModel>> IntensityFields()
+{
+    return kIntensityFields;
+}
+
+std::span<const Field<MaterialAssignment>> AssignmentFields()
+{
+    return kAssignmentFields;
+}
+
+std::span<const Field<ParticleBudget>> BudgetFields()
+{
+    return kBudgetFields;
+}
+
+} // namespace cfx
