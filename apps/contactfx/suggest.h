@@ -1,7 +1,6 @@
 // contactfx's "did you mean ...?": the valid name nearest to a mistyped one.
 #pragma once
 
-#include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
@@ -10,13 +9,10 @@
 namespace cfx::cli
 {
 
-/// Edits that turn `a` into `b`: inserting, deleting or replacing a character, or swapping two
-/// neighbouring ones, each counts 1 (optimal string alignment distance). Case-sensitive.
-std::size_t EditDistance(std::string_view a, std::string_view b);
-
-/// The candidate nearest to `word` by EditDistance when it is near enough to be a typo of it: at most
-/// max(2, word.size() / 3) edits, and fewer than half of word.size(). Of equally near ones the first;
-/// nullopt when none is that near or `word` is one of the candidates.
+/// The candidate nearest to `word` when it is near enough to be a typo of it, by the scene readers' rule
+/// (scene_detail::NearestKey: at most max(2, size / 3) edits of inserting, deleting, replacing or swapping
+/// neighbouring characters, fewer than half of the word's characters, a case slip counting one). Of
+/// equally near ones the first; nullopt when none is that near or `word` is one of the candidates.
 std::optional<std::string> NearestName(std::string_view word, std::span<const std::string> candidates);
 
 /// "did you mean 'X'?" for NearestName's X; empty when there is none.

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,23 @@ inline CliResult RunCommand(const std::string& commandLine)
 inline CliResult RunCli(const std::string& args)
 {
     return RunCommand(std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx " + args);
+}
+
+/// Runs `contactfx ARGS` with a stand-in `ffmpeg` first on PATH: one that reads every frame, writes
+/// "partial" to the file it was told to write (its last argument) and exits with `exitStatus`.
+inline CliResult RunCliWithFakeFfmpeg(const std::string& args, int exitStatus)
+{
+    const std::filesystem::path bin =
+        std::filesystem::temp_directory_path() / ("contactfx_test_fake_ffmpeg_" + std::to_string(exitStatus));
+    std::filesystem::create_directories(bin);
+    std::ofstream(bin / "ffmpeg") << "#!/bin/sh\ncat > /dev/null\nfor a; do last=$a; done\n"
+                                     "echo partial > \"$last\"\nexit "
+                                  << exitStatus << "\n";
+    std::filesystem::permissions(bin / "ffmpeg", std::filesystem::perms::owner_all);
+    const char* saved = std::getenv("PATH");
+    const std::string path = saved != nullptr ? saved : "";
+    return RunCommand("PATH='" + bin.string() + ":" + path + "' " + std::string(CONTACTFX_BINARY_DIR) +
+                      "/bin/contactfx " + args);
 }
 
 /// A fresh scratch folder for one test.

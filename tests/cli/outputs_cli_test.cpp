@@ -297,18 +297,10 @@ TEST(CliOutputs, AVideoCutShortByAFullDiskIsAnErrorAndLeavesNoFile)
 TEST(CliOutputs, AnFfmpegThatExitsZeroWithABrokenVideoLeavesNoFile)
 {
     // A stand-in ffmpeg that takes every frame, writes garbage where it was told and says all went well.
-    const fs::path bin = ScratchDir("outputs_fake_ffmpeg_bin");
-    std::ofstream(bin / "ffmpeg") << "#!/bin/sh\ncat > /dev/null\nfor a; do last=$a; done\n"
-                                     "echo partial > \"$last\"\nexit 0\n";
-    fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
     const fs::path dir = ScratchDir("outputs_fake_ffmpeg");
     WriteTestFile(dir / "clip.mp4", "old video");
-    const char* saved = std::getenv("PATH");
-    const std::string path = saved != nullptr ? saved : "";
-    ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
-    const CliResult result =
-        RunCli("render --demo --seconds 0.3 --fps 10" + kTiny + "--out " + (dir / "clip.mp4").string());
-    ::setenv("PATH", path.c_str(), 1);
+    const CliResult result = RunCliWithFakeFfmpeg(
+        "render --demo --seconds 0.3 --fps 10" + kTiny + "--out " + (dir / "clip.mp4").string(), 0);
     ExpectError(result, {"clip.mp4", "incomplete"}, "fake ffmpeg");
     EXPECT_EQ(FileText(dir / "clip.mp4"), "old video");
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"clip.mp4"});

@@ -145,18 +145,9 @@ TEST(CliRender, WithoutFfmpegAVideoIsAClearErrorAndNoFile)
 TEST(CliRender, AFailingFfmpegLeavesNoFile)
 {
     // A stand-in ffmpeg that takes every frame, writes half a file where it was told, and fails.
-    const std::filesystem::path bin = ScratchDir("render_fake_ffmpeg_bin");
-    const std::filesystem::path fake = bin / "ffmpeg";
-    std::ofstream(fake)
-        << "#!/bin/sh\ncat > /dev/null\nfor a; do last=$a; done\necho partial > \"$last\"\nexit 3\n";
-    std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
     const std::filesystem::path dir = ScratchDir("render_fake_ffmpeg");
-    const char* saved = std::getenv("PATH");
-    const std::string path = saved != nullptr ? saved : "";
-    ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
-    const CliResult result =
-        RunCli("render --demo --seconds 0.2" + kTiny + "--out " + (dir / "clip.mp4").string());
-    ::setenv("PATH", path.c_str(), 1);
+    const CliResult result = RunCliWithFakeFfmpeg(
+        "render --demo --seconds 0.2" + kTiny + "--out " + (dir / "clip.mp4").string(), 3);
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_NE(result.output.find("ffmpeg failed (exit status 3)"), std::string::npos) << result.output;
     EXPECT_NE(result.output.find("clip.mp4"), std::string::npos) << result.output;
