@@ -70,6 +70,14 @@ void CheckRunOptions(const RunOptions& options)
     }
 }
 
+void PrintSceneWarnings(const Scene& scene)
+{
+    for (const Diagnostic& warning : scene.warnings)
+    {
+        std::cerr << "contactfx: " << warning.ToString() << '\n'; // "...: warning: ..."
+    }
+}
+
 EffectsConfig SelectConfig(const RunOptions& options)
 {
     if (!options.effects.empty())

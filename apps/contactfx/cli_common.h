@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contactfx/config.h"
+#include "contactfx/scene/rube.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -42,6 +43,10 @@ void AddEffectsOptions(CLI::App& command, RunOptions& options,
 
 /// True when --preset or --effects was given: they replace a registered scene's effects.
 bool EffectsChosen(const RunOptions& options);
+
+/// Prints the warnings of a loaded scene (unknown keys, dropped polygon vertices) to stderr, one line each
+/// ("contactfx: FILE: PATH: warning: ..."): a run goes on, but the author sees what was ignored.
+void PrintSceneWarnings(const Scene& scene);
 
 /// Checks ranges CLI11 cannot (NaN, infinities); throws InputError naming the flag.
 void CheckRunOptions(const RunOptions& options);

@@ -153,6 +153,7 @@ int Render(RenderOptions options)
     outputs.Prepare();
 
     Simulation simulation(def);
+    PrintSceneWarnings(simulation.GetScene());
 
     const b2Body* followed = nullptr;
     if (!options.follow.empty())

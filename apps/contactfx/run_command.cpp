@@ -89,6 +89,7 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     outputs.Prepare();
 
     Simulation simulation(scenario.def);
+    PrintSceneWarnings(simulation.GetScene());
     PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));
     for (std::uint64_t i = 0; i < steps; ++i)

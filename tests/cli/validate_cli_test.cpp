@@ -376,6 +376,17 @@ TEST(CliValidate, WarningsAreListedAndStrictMakesThemErrors)
         << repaired.output;
     EXPECT_EQ(RunCli("validate --strict " + arrow).exitCode, 1);
     EXPECT_EQ(RunCli("validate --strict " + Scene("grinder.json")).exitCode, 0);
+
+    // `run` and `render` go on, but say what they ignored.
+    for (const std::string& command : {std::string("run "), "render --out " + (dir / "f.png").string() + " "})
+    {
+        const CliResult ran = RunCli(command + file + " --seconds 0.1");
+        EXPECT_EQ(ran.exitCode, 0) << ran.output;
+        EXPECT_NE(
+            ran.output.find("contactfx: " + file + ": gravty: warning: unknown key, did you mean `gravity`?"),
+            std::string::npos)
+            << command << ran.output;
+    }
 }
 
 // An effects config where a scene belongs, and the reverse, fail with a message that says so.
