@@ -34,6 +34,17 @@ bool IsSolid(const b2Contact* contact)
 
 } // namespace
 
+RuleTable BuildRuleTable(const EffectsConfig& config)
+{
+    RuleTable table(static_cast<int>(config.materials.size()));
+    for (std::size_t i = 0; i < config.rules.size(); ++i)
+    {
+        table.Set(config.FindMaterial(config.rules[i].materialA),
+                  config.FindMaterial(config.rules[i].materialB), RuleId{static_cast<std::uint16_t>(i)});
+    }
+    return table;
+}
+
 ContactTracker::ContactTracker(const RuleTable& rules, const FixtureMaterials& materials)
     : m_rules(rules), m_materials(materials), m_byRule(static_cast<std::size_t>(rules.RuleCount()))
 {

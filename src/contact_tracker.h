@@ -23,6 +23,7 @@
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
 
+#include "contactfx/config.h"
 #include "contactfx/events.h"
 #include "contactfx/rules.h"
 #include "fixture_materials.h"
@@ -38,6 +39,9 @@ class b2Contact;
 
 namespace cfx
 {
+
+/// The rule table a config describes: rule i for the pair of its two materials (the config must be valid).
+RuleTable BuildRuleTable(const EffectsConfig& config);
 
 /// A touching contact that a rule watches.
 struct TrackedContact

@@ -30,17 +30,6 @@ const EffectsConfig& Checked(const EffectsConfig& config)
     return config;
 }
 
-RuleTable BuildRuleTable(const EffectsConfig& config)
-{
-    RuleTable table(static_cast<int>(config.materials.size()));
-    for (std::size_t i = 0; i < config.rules.size(); ++i)
-    {
-        table.Set(config.FindMaterial(config.rules[i].materialA),
-                  config.FindMaterial(config.rules[i].materialB), RuleId{static_cast<std::uint16_t>(i)});
-    }
-    return table;
-}
-
 // The worlds that have an Effects object now, so that a second one on the same world is refused (it would
 // take the first one's listeners, and destroying them in the wrong order would leave Box2D calling a
 // destroyed tracker). Effects on different worlds may live on different threads: guarded by a mutex.

@@ -88,14 +88,12 @@ void ExpectFinite(const EffectEvent& event)
     EXPECT_TRUE(std::isfinite(event.approachSpeed)) << "event " << event.id;
 }
 
-RuleTable BuildRules(const EffectsConfig& config);
-
 // The emitter as Effects drives it, without Effects' config validation: the emitter must stay defined
 // for any numbers, whatever ranges validation enforces.
 struct RawEmitter : TestWorld
 {
     explicit RawEmitter(EffectsConfig effectsConfig)
-        : config(std::move(effectsConfig)), rules(BuildRules(config)), tracker(rules, materials),
+        : config(std::move(effectsConfig)), rules(BuildRuleTable(config)), tracker(rules, materials),
           particles(*world, config.particleTypes, config.budget), emitter(config, 1)
     {
         stats.spawnedByType.assign(config.particleTypes.size(), 0);
@@ -143,17 +141,6 @@ struct RawEmitter : TestWorld
     b2Body* ground = nullptr;
     b2Body* box = nullptr;
 };
-
-RuleTable BuildRules(const EffectsConfig& config)
-{
-    RuleTable rules(static_cast<int>(config.materials.size()));
-    for (std::size_t i = 0; i < config.rules.size(); ++i)
-    {
-        rules.Set(config.FindMaterial(config.rules[i].materialA),
-                  config.FindMaterial(config.rules[i].materialB), RuleId{static_cast<std::uint16_t>(i)});
-    }
-    return rules;
-}
 
 EffectsConfig SmallPool(EffectsConfig config, std::uint32_t capacity)
 {
