@@ -1,5 +1,6 @@
 # Installation: `cmake --install BUILD --prefix P` puts
-#   lib/libcontactfx{,_scene,_render}.a        the core and the two optional components
+#   lib/libcontactfx{,_files,_scene,_render}.a the core (files: whole-file writing for the components)
+#                                               and the two optional components
 #   include/contactfx/...                       public headers, version.h included
 #   lib/cmake/contactfx/contactfxConfig*.cmake  find_package(contactfx [COMPONENTS scene render])
 #   lib/pkgconfig/contactfx{,-scene,-render}.pc pkg-config
@@ -13,7 +14,7 @@ install(FILES ${PROJECT_BINARY_DIR}/include/contactfx/version.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/contactfx COMPONENT development)
 
 # One export set per component, so that a consumer of the core needs neither nlohmann-json nor Cairo.
-install(TARGETS contactfx EXPORT contactfxTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+install(TARGETS contactfx contactfx_files EXPORT contactfxTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   COMPONENT development)
 install(TARGETS contactfx_scene EXPORT contactfxSceneTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   COMPONENT development)

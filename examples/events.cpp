@@ -151,6 +151,8 @@ int main()
                 StopLoop(loops.at(event.id));
                 loops.erase(event.id);
                 break;
+            case cfx::EffectEventType::particleHits:
+                break; // particles pattering on a body: cfx::SoundVoices turns them into short ticks and taps
             }
         }
     }

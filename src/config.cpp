@@ -216,6 +216,19 @@ void CheckFields(Checker& check, const std::string& at, const S& value, std::spa
     }
 }
 
+// Unordered material pairs seen so far in a list (rules, sound rules).
+using MaterialPairs = std::set<std::pair<std::string_view, std::string_view>>;
+
+// "A+B" (sorted) when `seen` already has the unordered pair {a, b}, else "" (and the pair is added).
+std::string RepeatedPair(MaterialPairs& seen, std::string_view a, std::string_view b)
+{
+    if (b < a)
+    {
+        std::swap(a, b);
+    }
+    return seen.insert({a, b}).second ? std::string() : std::string(a) + "+" + std::string(b);
+}
+
 } // namespace
 
 std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view file)
@@ -266,21 +279,15 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     {
         check.Fail("rules", "expected at most 65534 rules");
     }
-    std::set<std::pair<std::string_view, std::string_view>> pairs;
+    MaterialPairs pairs;
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
         const std::string at = "rules[" + std::to_string(i) + "]";
         const RuleDef& rule = config.rules[i];
         CheckFields(check, at, rule, RuleFields(), config);
-        std::string_view a = rule.materialA;
-        std::string_view b = rule.materialB;
-        if (b < a)
+        if (const std::string pair = RepeatedPair(pairs, rule.materialA, rule.materialB); !pair.empty())
         {
-            std::swap(a, b);
-        }
-        if (!pairs.insert({a, b}).second)
-        {
-            check.Fail(at, "a second rule for the pair " + std::string(a) + "+" + std::string(b));
+            check.Fail(at, "a second rule for the pair " + pair);
         }
     }
 
@@ -291,6 +298,19 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     }
 
     CheckFields(check, "budget", config.budget, BudgetFields(), config);
+
+    CheckFields(check, "sound", config.sound, SoundFields(), config);
+    MaterialPairs soundPairs;
+    for (std::size_t i = 0; i < config.sound.rules.size(); ++i)
+    {
+        const std::string at = "sound.rules[" + std::to_string(i) + "]";
+        const SoundRuleDef& rule = config.sound.rules[i];
+        CheckFields(check, at, rule, SoundRuleFields(), config);
+        if (const std::string pair = RepeatedPair(soundPairs, rule.materialA, rule.materialB); !pair.empty())
+        {
+            check.Fail(at, "a second sound rule for the pair " + pair);
+        }
+    }
     return out;
 }
 

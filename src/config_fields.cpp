@@ -48,6 +48,7 @@ constexpr std::string_view kFrictionMixes[] = {"product", "sqrt", "min", "max", 
 constexpr std::string_view kManifoldPoints[] = {"first", "all"};
 constexpr std::string_view kBodyTypeFilters[] = {"any", "static", "kinematic", "dynamic"};
 constexpr std::string_view kRecyclePolicies[] = {"oldest", "lowestLife"};
+constexpr std::string_view kTimbres[] = {"auto", "hiss", "squeal", "rumble"};
 
 using P = ParticleTypeDef;
 const std::array kParticleTypeFields{
@@ -134,6 +135,13 @@ const std::array kParticleTypeFields{
              .member = &P::maskBits,
              .range = {0.0f, 65535.0f},
              .doc = "the fixture categories particles of this type hit"},
+    Field<P>{.name = "hitSpeed",
+             .member = &P::hitSpeed,
+             .unit = "m/s",
+             .range = {0.0f, 1000.0f},
+             .doc = "a touch approaching the surface at least this fast is a particle hit (resting particles "
+                    "approach at 0.16 to 0.33 m/s)",
+             .step = 0.05f},
     Field<P>{.name = "density",
              .member = &P::density,
              .unit = "kg/m²",
@@ -331,6 +339,145 @@ const std::array kBudgetFields{
                  "touching contacts (and body pairs) room is made for at creation: with no more touching at "
                  "once, neither the contact callbacks nor `Effects::Step` allocate",
              .step = 64.0f},
+    Field<B>{.name = "particleHits",
+             .member = &B::particleHits,
+             .range = {0.0f, 4096.0f},
+             .doc = "particle hit groups (per type and body) a step reports at most, the largest kept; 0 "
+                    "records no hits",
+             .step = 1.0f},
+};
+
+using SC = SoundConfig;
+const std::array kSoundFields{
+    Field<SC>{.name = "maxVoices",
+              .member = &SC::maxVoices,
+              .range = {1.0f, 4096.0f},
+              .doc = "most voices sounding at once; beyond it the loudest win (ties: the older voice)",
+              .step = 1.0f},
+    Field<SC>{.name = "impactMergeWindow",
+              .member = &SC::impactMergeWindow,
+              .unit = "s",
+              .range = {0.0f, 10.0f},
+              .doc = "impacts of one body pair within this time of its impact voice's start merge into "
+                     "that voice, which takes the loudest",
+              .step = 0.005f},
+    Field<SC>{.name = "trackedPairs",
+              .member = &SC::trackedPairs,
+              .range = {0.0f, 1.0e6f},
+              .doc = "body pairs tracked at once (scraping, sounding, releasing or cooling down) room is "
+                     "made for at creation: with no more at once, `SoundVoices::Step` does not allocate",
+              .step = 16.0f},
+    Field<SC>{.name = "gain",
+              .member = &SC::gain,
+              .range = {0.0f, 4.0f},
+              .doc = "the synthesizer's level: a voice's amplitude is gain * loudness before the soft "
+                     "limiter",
+              .step = 0.01f},
+    Field<SC>{.name = "particleHitGain",
+              .member = &SC::particleHitGain,
+              .unit = "1/(m/s)",
+              .range = {0.0f, 1000.0f},
+              .doc = "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count))",
+              .step = 0.005f},
+    Field<SC>{.name = "particleHitLength",
+              .member = &SC::particleHitLength,
+              .unit = "s",
+              .range = {0.0f, 10.0f, true},
+              .doc = "how long a particle hits voice lasts (a tick or a tap), decaying to silence",
+              .step = 0.005f},
+};
+
+using SR = SoundRuleDef;
+const std::array kSoundRuleFields{
+    Field<SR>{.name = "materialA",
+              .member = &SR::materialA,
+              .doc = "with `materialB`, the pair rule this sound rule is for (either order)",
+              .text = TextRule::material},
+    Field<SR>{.name = "materialB",
+              .member = &SR::materialB,
+              .doc = "the pair's other material",
+              .text = TextRule::material},
+    Field<SR>{.name = "scrapeStart",
+              .member = &SR::scrapeStart,
+              .range = kUnit,
+              .doc = "loudness at or above which a scrape starts a voice",
+              .step = 0.005f},
+    Field<SR>{.name = "scrapeContinueRatio",
+              .member = &SR::scrapeContinueRatio,
+              .range = kUnit,
+              .doc = "a sounding scrape voice goes on while its loudness stays at or above scrapeStart times "
+                     "this (hysteresis); below it, or when the scrape ends, it releases",
+              .step = 0.01f},
+    Field<SR>{.name = "minDuration",
+              .member = &SR::minDuration,
+              .unit = "s",
+              .range = {0.0f, 10.0f},
+              .doc = "a scrape voice sounds at least this long before it may release",
+              .step = 0.005f},
+    Field<SR>{.name = "release",
+              .member = &SR::release,
+              .unit = "s",
+              .range = {0.0f, 10.0f},
+              .doc =
+                  "fade to silence after a scrape voice lets go; a scrape of the same body pair that comes "
+                  "back meanwhile takes the voice over",
+              .step = 0.005f},
+    Field<SR>{.name = "cooldown",
+              .member = &SR::cooldown,
+              .unit = "s",
+              .range = {0.0f, 60.0f},
+              .doc = "least time between two voice starts of the same kind for one body pair (an impact "
+                     "inside it is dropped unless it merges; a scrape waits)",
+              .step = 0.005f},
+    Field<SR>{.name = "intensityGain",
+              .member = &SR::intensityGain,
+              .unit = "per unit of intensity",
+              .range = {0.0f, 1000.0f},
+              .doc = "scrape loudness = 1 - exp(-(intensityGain * intensity + slipSpeedGain * slip speed + "
+                     "forceGain * normal force))",
+              .step = 0.001f},
+    Field<SR>{.name = "slipSpeedGain",
+              .member = &SR::slipSpeedGain,
+              .unit = "per m/s",
+              .range = {0.0f, 1000.0f},
+              .doc = "scrape loudness from the tangential (slip) speed",
+              .step = 0.001f},
+    Field<SR>{.name = "forceGain",
+              .member = &SR::forceGain,
+              .unit = "1/N",
+              .range = {0.0f, 1000.0f},
+              .doc = "scrape loudness from the body pair's normal force (its normal impulse / dt)",
+              .step = 0.0001f},
+    Field<SR>{.name = "approachSpeedGain",
+              .member = &SR::approachSpeedGain,
+              .unit = "per m/s",
+              .range = {0.0f, 1000.0f},
+              .doc = "impact loudness = 1 - exp(-(approachSpeedGain * approach speed + impulseGain * normal "
+                     "impulse))",
+              .step = 0.001f},
+    Field<SR>{.name = "impulseGain",
+              .member = &SR::impulseGain,
+              .unit = "1/(N*s)",
+              .range = {0.0f, 1000.0f},
+              .doc = "impact loudness from the body pair's normal impulse in the step of the impact",
+              .step = 0.001f},
+    Field<SR>{.name = "impactLength",
+              .member = &SR::impactLength,
+              .unit = "s",
+              .range = {0.0f, 10.0f, true},
+              .doc = "how long an impact voice lasts; its loudness decays to 0 over it",
+              .step = 0.005f},
+    Field<SR>{.name = "brightSpeed",
+              .member = &SR::brightSpeed,
+              .unit = "m/s",
+              .range = {0.0f, 1000.0f, true},
+              .doc = "slip speed at which a scrape sounds brightest (highest filter, highest pitch)",
+              .step = 0.1f},
+    Field<SR>{.name = "timbre",
+              .member = Choice<&SR::timbre>(),
+              .doc = "the built-in synthesizer's colour: `auto` picks from the material names (rubber, tyre, "
+                     "tire: squeal; dirt, sand, soil, mud, grass, gravel: rumble; else hiss)",
+              .choices = kTimbres},
 };
 
 } // namespace
@@ -358,6 +505,16 @@ std::span<const Field<MaterialAssignment>> AssignmentFields()
 std::span<const Field<ParticleBudget>> BudgetFields()
 {
     return kBudgetFields;
+}
+
+std::span<const Field<SoundConfig>> SoundFields()
+{
+    return kSoundFields;
+}
+
+std::span<const Field<SoundRuleDef>> SoundRuleFields()
+{
+    return kSoundRuleFields;
 }
 
 } // namespace cfx

@@ -59,7 +59,7 @@ void ContactTracker::Reserve(std::uint32_t contacts)
     m_index.Reserve(contacts);
     m_pairs.reserve(contacts);
     m_freePairs.reserve(contacts);
-    m_endedScrapes.reserve(contacts);
+    m_endedPairs.reserve(contacts);
 }
 
 void ContactTracker::Track(b2Contact* contact, bool firstTouch)
@@ -137,17 +137,18 @@ std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
     {
         slot = static_cast<std::uint32_t>(m_pairs.size());
         m_pairs.emplace_back();
-        // Room for every slot to be free, and for every pair's scrape to end in one step: freeing a pair
-        // or ending its scrape inside a callback never allocates.
+        // Room for every slot to be free, and for every slot's pair to end in one step (a slot is listed
+        // once at most): freeing a pair inside a callback never allocates.
         m_freePairs.reserve(m_pairs.capacity());
-        m_endedScrapes.reserve(m_pairs.capacity());
+        m_endedPairs.reserve(m_pairs.capacity());
     }
     m_pairs[slot] = TrackedPair{};
     m_pairs[slot].rule = rule;
+    m_pairs[slot].beganStep = m_step;
     return slot;
 }
 
-void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
+void ContactTracker::Untrack(b2Contact* contact, bool destroyed)
 {
     std::uint64_t* value = m_index.Find(contact);
     if (value == nullptr)
@@ -160,12 +161,18 @@ void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
     pair.contacts -= 1;
     if (pair.contacts == 0)
     {
-        // The pair's last contact: its scrape ends with it, naming this contact's fixtures (so that a
-        // destroyed fixture is recognised by MarkDestroyed).
-        if (pair.scrapeId != 0)
+        // The pair's last contact, named so that a destroyed fixture is recognised by MarkDestroyed. A
+        // pair that began after the last EndStep was never seen by a step: nobody keeps state for it.
+        if (pair.beganStep < m_step)
         {
-            m_endedScrapes.push_back(
-                EndScrapeWith(pair, reason, RuleFixtureA(list[slot]), RuleFixtureB(list[slot])));
+            EndedPair ended;
+            ended.slot = list[slot].pair;
+            ended.destroyed = destroyed;
+            ended.fixtureA = RuleFixtureA(list[slot]);
+            ended.fixtureB = RuleFixtureB(list[slot]);
+            ended.materialA = m_materials.Recorded(ended.fixtureA);
+            ended.materialB = m_materials.Recorded(ended.fixtureB);
+            m_endedPairs.push_back(ended);
         }
         m_freePairs.push_back(list[slot].pair);
     }
@@ -187,7 +194,7 @@ void ContactTracker::Prune()
             b2Contact* contact = list[i].contact;
             if (!IsSolid(contact) || !contact->IsTouching())
             {
-                Untrack(contact, ScrapeEnd::contactEnded);
+                Untrack(contact, false);
             }
         }
     }
@@ -201,8 +208,10 @@ void ContactTracker::EndStep()
         {
             tracked.normalImpulse[0] = 0.0f;
             tracked.normalImpulse[1] = 0.0f;
+            tracked.newTouch = false;
         }
     }
+    m_endedPairs.clear();
     ++m_step;
 }
 
@@ -215,7 +224,7 @@ void ContactTracker::ForgetFixture(const b2Fixture* fixture)
             b2Contact* contact = list[i].contact;
             if (contact->GetFixtureA() == fixture || contact->GetFixtureB() == fixture)
             {
-                Untrack(contact, ScrapeEnd::destroyed);
+                Untrack(contact, true);
             }
         }
     }
@@ -223,11 +232,11 @@ void ContactTracker::ForgetFixture(const b2Fixture* fixture)
 
 void ContactTracker::MarkDestroyed(const b2Fixture* fixture)
 {
-    for (EffectEvent& ended : m_endedScrapes)
+    for (EndedPair& ended : m_endedPairs)
     {
         if (ended.fixtureA == fixture || ended.fixtureB == fixture)
         {
-            ended.end = ScrapeEnd::destroyed;
+            ended.destroyed = true;
         }
     }
 }
@@ -242,32 +251,6 @@ const b2Fixture* ContactTracker::RuleFixtureB(const TrackedContact& tracked) con
     return tracked.swapped ? tracked.contact->GetFixtureA() : tracked.contact->GetFixtureB();
 }
 
-EffectEvent ContactTracker::EndScrape(TrackedPair& pair, ScrapeEnd reason) const
-{
-    return EndScrapeWith(pair, reason, pair.scrapeFixtureA, pair.scrapeFixtureB);
-}
-
-EffectEvent ContactTracker::EndScrapeWith(TrackedPair& pair, ScrapeEnd reason, const b2Fixture* fixtureA,
-                                          const b2Fixture* fixtureB) const
-{
-    EffectEvent event;
-    event.type = EffectEventType::scrapeEnded;
-    event.end = reason;
-    event.rule = pair.rule;
-    event.fixtureA = fixtureA;
-    event.fixtureB = fixtureB;
-    // The fixtures last reported may have been destroyed since: their recorded materials, unread.
-    event.materialA = m_materials.Recorded(fixtureA);
-    event.materialB = m_materials.Recorded(fixtureB);
-    event.id = pair.scrapeId;
-    event.step = m_step;
-    event.point = pair.scrapePoint;
-    event.normal = pair.scrapeNormal;
-    pair.scrapeId = 0;
-    pair.quietTime = 0.0f;
-    return event;
-}
-
 void ContactTracker::RecordApproach(b2Contact* contact, TrackedContact& tracked)
 {
     const b2Manifold* manifold = contact->GetManifold();
@@ -279,7 +262,7 @@ void ContactTracker::RecordApproach(b2Contact* contact, TrackedContact& tracked)
     contact->GetWorldManifold(&world);
     const b2Body* bodyA = contact->GetFixtureA()->GetBody();
     const b2Body* bodyB = contact->GetFixtureB()->GetBody();
-    tracked.impactPending = true;
+    tracked.newTouch = true;
     tracked.approachNormal = world.normal;
     tracked.approachSpeed = -1.0f;
     for (int i = 0; i < manifold->pointCount; ++i)
@@ -307,7 +290,7 @@ void ContactTracker::BeginContact(b2Contact* contact)
 
 void ContactTracker::EndContact(b2Contact* contact)
 {
-    Untrack(contact, ScrapeEnd::contactEnded);
+    Untrack(contact, false);
     if (m_forward != nullptr)
     {
         m_forward->EndContact(contact);

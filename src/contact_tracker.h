@@ -2,29 +2,34 @@
 //
 // The tracker is the b2ContactListener that Effects installs on the world. For each rule it keeps the
 // touching contacts whose two fixtures' materials select that rule, in a dense array (insertion order,
-// swap-remove), plus the PostSolve normal impulses of each manifold point. Callbacks only record: the
-// world is locked while they run. Every callback is forwarded, unchanged, to the application's own
-// listener when it has one, after contactfx has recorded it.
+// swap-remove), plus the PostSolve normal impulses of each manifold point and, for a first touch, the
+// approach speed before the solver. Callbacks only record what Box2D reported: the world is locked while
+// they run. Every callback is forwarded, unchanged, to the application's own listener when it has one,
+// after contactfx has recorded it. The tracker makes no effect and no event: the emitter (particles) and
+// the event tracker (src/events.h: scrapes, impacts, their ids) read what it recorded after the step.
 //
 // Contacts of one rule between the same two bodies form one body pair (TrackedPair): one sliding contact
-// however many fixtures, chain segments or manifold points it spans. The pair carries what must survive
-// a contact moving from one segment to the next: the fraction of a particle owed (rate emission) and the
-// scrape going on (events.h). A pair lives while at least one of its contacts is tracked; a contact finds
-// its pair when tracking begins by walking the shorter of its two bodies' Box2D contact lists for another
-// tracked contact of the same rule between the same bodies (no map keyed by addresses, nothing iterated
-// in address order). Pair slots are reused from a free list, in an order fixed by Box2D's callback order.
+// however many fixtures, chain segments or manifold points it spans. Whatever must survive a contact
+// moving from one segment to the next (the fraction of a particle owed, the scrape going on) is kept per
+// pair slot by the module that owns it. A pair lives while at least one of its contacts is tracked; a
+// contact finds its pair when tracking begins by walking the shorter of its two bodies' Box2D contact
+// lists for another tracked contact of the same rule between the same bodies (no map keyed by addresses,
+// nothing iterated in address order). Pair slots are reused from a free list, in an order fixed by
+// Box2D's callback order.
 //
 // A contact leaves tracking when it ends (EndContact: also sent by Box2D when a fixture or body is
 // destroyed, a body disabled, or a filter change stops the pair from colliding) and when one of its
 // fixtures becomes a sensor (found by Prune() after the step; PreSolve brings it back if the fixture
 // becomes solid again while still touching). Nothing dangles: a tracked b2Contact* is always alive.
-// When a pair's last contact leaves, the pair's scrape ends there (reported first in the next step).
+// When the last contact of a pair that an Effects step has seen leaves, the pair goes into EndedPairs()
+// with that contact's fixtures: the modules that keep state per pair slot learn there that the slot's
+// pair is gone (a pair that began and ended between two steps was never seen, so nobody holds state
+// for it).
 //
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
 
 #include "contactfx/config.h"
-#include "contactfx/events.h"
 #include "contactfx/rules.h"
 #include "fixture_materials.h"
 #include "pointer_map.h"
@@ -54,9 +59,9 @@ struct TrackedContact
     std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
 
-    // Impacts (events.h): per contact, merged per body pair by the emitter.
-    bool impactPending = false;        ///< began touching since the last Effects step
-    float approachSpeed = 0.0f;        ///< m/s along the normal at BeginContact, before the solver
+    // The first touch (BeginContact with a manifold point), the stuff of impacts (events.h).
+    bool newTouch = false;             ///< began touching since the last EndStep, approach recorded
+    float approachSpeed = 0.0f;        ///< m/s along the normal at BeginContact, before the solver, >= 0
     b2Vec2 approachPoint{0.0f, 0.0f};  ///< m, world: the manifold point approaching fastest
     b2Vec2 approachNormal{0.0f, 0.0f}; ///< unit, from the contact's fixture A to fixture B
 };
@@ -66,16 +71,24 @@ struct TrackedContact
 struct TrackedPair
 {
     RuleId rule;
-    std::uint32_t contacts = 0; ///< tracked contacts that belong to it; 0: a free slot
-    float emissionCarry = 0.0f; ///< fraction of a particle owed (rate emission), kept across contacts
+    std::uint32_t contacts = 0;  ///< tracked contacts that belong to it; 0: a free slot
+    std::uint64_t beganStep = 0; ///< value of the step counter when its first contact was tracked
+};
 
-    // The scrape (events.h), one per pair.
-    std::uint32_t scrapeId = 0;                ///< id of the scrape going on, 0 when none
-    float quietTime = 0.0f;                    ///< s the intensity has stayed at or below the threshold
-    b2Vec2 scrapePoint{0.0f, 0.0f};            ///< m, world: where the scrape was last reported
-    b2Vec2 scrapeNormal{0.0f, 0.0f};           ///< unit, rule's A toward B, as last reported
-    const b2Fixture* scrapeFixtureA = nullptr; ///< rule's materialA fixture of the point last reported
-    const b2Fixture* scrapeFixtureB = nullptr; ///< rule's materialB fixture of the point last reported
+/// A body pair that lost its last contact since the last EndStep, after an Effects step had seen it
+/// (ContactTracker::EndedPairs).
+struct EndedPair
+{
+    std::uint32_t slot = 0; ///< its pair slot, free now (perhaps already reused by a newer pair)
+    /// The fixture or body of its last contact was destroyed (ForgetFixture, or Box2D's destruction
+    /// listener through MarkDestroyed); else the fixtures stopped touching or one became a sensor.
+    bool destroyed = false;
+    /// The last contact's fixtures in the rule's order (materialA's first) and their materials as
+    /// recorded when it left. The fixtures may have been destroyed since: compare, never dereference.
+    const b2Fixture* fixtureA = nullptr;
+    const b2Fixture* fixtureB = nullptr;
+    MaterialId materialA;
+    MaterialId materialB;
 };
 
 class ContactTracker final : public b2ContactListener
@@ -84,7 +97,7 @@ public:
     /// `rules` and `materials` must outlive the tracker.
     ContactTracker(const RuleTable& rules, const FixtureMaterials& materials);
     /// Makes room for `contacts` touching contacts (of any rules) and as many body pairs and ended
-    /// scrapes: up to that many, tracking allocates nothing.
+    /// pairs: up to that many, tracking allocates nothing.
     void Reserve(std::uint32_t contacts);
 
     /// The application's listener, forwarded every callback; may be null.
@@ -100,32 +113,27 @@ public:
 
     /// After b2World::Step: drops contacts that became sensors or stopped touching without EndContact.
     void Prune();
-    /// Before the next b2World::Step: zeroes the recorded impulses and advances the step counter.
+    /// Once the step has read what was recorded (after emission), before the next b2World::Step: zeroes
+    /// the recorded impulses, forgets new touches and ended pairs, and advances the step counter. Pairs
+    /// tracked before it count as seen by a step.
     void EndStep();
 
-    /// Drops every contact that involves `fixture` (before it is destroyed by the application); their
-    /// scrapes end as `destroyed`.
+    /// Drops every contact that involves `fixture` (before it is destroyed by the application); pairs
+    /// that end with them are marked destroyed.
     void ForgetFixture(const b2Fixture* fixture);
-    /// After Box2D destroyed `fixture` (b2DestructionListener): scrapes that ended with its contacts
-    /// are reported as `destroyed`.
+    /// After Box2D destroyed `fixture` (b2DestructionListener): pairs that ended with its contacts are
+    /// marked destroyed.
     void MarkDestroyed(const b2Fixture* fixture);
 
-    /// Scrapes that ended since the last ClearEndedScrapes(), in the order they ended.
-    std::span<const EffectEvent> EndedScrapes() const { return m_endedScrapes; }
-    void ClearEndedScrapes() { m_endedScrapes.clear(); }
+    /// Pairs an Effects step had seen that ended since the last EndStep, in the order they ended. A slot
+    /// appears at most once: a pair that takes a freed slot is seen only by a later step.
+    std::span<const EndedPair> EndedPairs() const { return m_endedPairs; }
     /// The body pair in `slot` (TrackedContact::pair).
-    TrackedPair& Pair(std::uint32_t slot) { return m_pairs[slot]; }
     const TrackedPair& Pair(std::uint32_t slot) const { return m_pairs[slot]; }
     /// Number of pair slots, used and free: every TrackedContact::pair is below it.
     std::size_t PairSlots() const { return m_pairs.size(); }
     /// Pairs with at least one tracked contact.
     std::size_t PairCount() const { return m_pairs.size() - m_freePairs.size(); }
-    /// Ends the scrape of a pair (the emitter's decision: asleep or below the threshold), naming the
-    /// fixtures last reported.
-    EffectEvent EndScrape(TrackedPair& pair, ScrapeEnd reason) const;
-    /// A fresh event id (scrapes and impacts); never 0, never reused.
-    std::uint32_t NewEventId() { return m_nextEventId++; }
-    const FixtureMaterials& Materials() const { return m_materials; }
     /// The step counter: Effects steps completed.
     std::uint64_t Step() const { return m_step; }
     /// The fixtures of a tracked contact in the rule's order (materialA's first).
@@ -140,11 +148,9 @@ public:
 
 private:
     void Track(b2Contact* contact, bool firstTouch);
-    void Untrack(b2Contact* contact, ScrapeEnd reason);
+    void Untrack(b2Contact* contact, bool destroyed);
     void RecordApproach(b2Contact* contact, TrackedContact& tracked);
     std::uint32_t FindOrAddPair(b2Contact* contact, RuleId rule);
-    EffectEvent EndScrapeWith(TrackedPair& pair, ScrapeEnd reason, const b2Fixture* fixtureA,
-                              const b2Fixture* fixtureB) const;
 
     const RuleTable& m_rules;
     const FixtureMaterials& m_materials;
@@ -153,9 +159,8 @@ private:
     detail::PointerMap m_index;             // contact -> (rule << 32) | slot
     std::vector<TrackedPair> m_pairs;       // by slot; slots with contacts == 0 are free
     std::vector<std::uint32_t> m_freePairs; // free slots, reused last freed first
-    std::vector<EffectEvent> m_endedScrapes;
+    std::vector<EndedPair> m_endedPairs;
     std::uint32_t m_nextId = 1;
-    std::uint32_t m_nextEventId = 1;
     std::uint64_t m_step = 0;
 };
 

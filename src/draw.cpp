@@ -8,6 +8,19 @@
 namespace cfx
 {
 
+SpriteLook LookOf(const ParticleTypeDef& type)
+{
+    if (type.streak > 0.0f)
+    {
+        return SpriteLook::spark;
+    }
+    if (type.sizeEnd > type.sizeStart || type.gravityScale <= 0.0f)
+    {
+        return SpriteLook::puff;
+    }
+    return SpriteLook::grain;
+}
+
 void CollectSprites(const Effects& effects, std::vector<ParticleSprite>& out)
 {
     const ParticleView view = effects.Particles();
@@ -25,6 +38,9 @@ void CollectSprites(const Effects& effects, std::vector<ParticleSprite>& out)
         sprite.size = look.size;
         sprite.streak = type.streak;
         sprite.type = ParticleTypeId{view.type[slot]};
+        sprite.look = LookOf(type);
+        sprite.life = view.life[slot];
+        sprite.lifetime = type.lifetime;
     }
 }
 

@@ -4,6 +4,7 @@
 #include "contactfx/error.h"
 #include "effects_access.h"
 #include "emitter.h"
+#include "events.h"
 #include "fixture_materials.h"
 
 #include <algorithm>
@@ -117,13 +118,15 @@ public:
 
 // What Effects keeps out of its public header. Members are declared in the order they depend on each
 // other: the claim on the world comes first (a second Effects throws before anything else), the tracker
-// reads the materials, the destruction listener edits both and the particle system.
+// and the event tracker read the materials, the destruction listener edits the materials, the tracker
+// and the particle system.
 struct Effects::Internals
 {
     Internals(b2World& world, const RuleTable& rules, const EffectsConfig& config, const EffectsDef& def,
               ParticleSystem& particles)
         : claim(world), tracker(rules, materials),
-          destruction(materials, tracker, particles, def.destructionListener), emitter(config, def.seed)
+          destruction(materials, tracker, particles, def.destructionListener), emitter(config, def.seed),
+          events(materials, config.budget.contacts, config.budget.particleHits)
     {
         tracker.SetForward(def.contactListener);
         tracker.Reserve(config.budget.contacts);
@@ -134,6 +137,7 @@ struct Effects::Internals
     ContactTracker tracker;
     Destruction destruction;
     detail::Emitter emitter;
+    detail::EventTracker events;
 };
 
 Effects::Effects(b2World& world, const EffectsDef& def)
@@ -144,8 +148,6 @@ Effects::Effects(b2World& world, const EffectsDef& def)
 {
     m_stats.spawnedByType.assign(m_config.particleTypes.size(), 0);
     m_stats.rules.assign(m_config.rules.size(), RuleStats{});
-    // A step reports at most a scrape end and an impact per body pair (budget.contacts of them).
-    m_events.reserve(std::size_t{2} * m_config.budget.contacts);
     m_world.SetContactListener(&m_internals->tracker);
     m_world.SetDestructionListener(&m_internals->destruction);
 }
@@ -207,12 +209,15 @@ void Effects::Step(float dt)
                          "expected the world's gravity to be finite, found " + found.str());
     }
     ContactTracker& tracker = m_internals->tracker;
+    detail::EventTracker& events = m_internals->events;
     tracker.Prune();
-    m_events.assign(tracker.EndedScrapes().begin(), tracker.EndedScrapes().end());
-    tracker.ClearEndedScrapes();
-    m_internals->emitter.Emit(m_world, m_config, tracker, m_particles, m_stats, m_events, dt);
-    m_particles.Step(dt, m_world.GetGravity());
+    events.BeginStep(tracker.Step(), dt, tracker.EndedPairs());
+    m_internals->emitter.Emit(m_world, m_config, tracker, events, m_particles, m_stats, dt);
+    // Everything recorded has been read. A contact that ends from here on (the particle step destroys
+    // bodies) is reported in the next step.
     tracker.EndStep();
+    m_particles.Step(dt, m_world.GetGravity());
+    events.ParticleHits(m_particles.Hits());
     m_stats.steps += 1;
     m_stats.time += static_cast<double>(dt);
     m_stats.live = m_particles.Count();
@@ -226,11 +231,16 @@ void Effects::Step(float dt)
     m_stats.staleMaterials = m_internals->materials.Stale();
     if (m_eventListener != nullptr)
     {
-        for (const EffectEvent& event : m_events)
+        for (const EffectEvent& event : events.Events())
         {
             m_eventListener->OnEffectEvent(event);
         }
     }
+}
+
+std::span<const EffectEvent> Effects::Events() const
+{
+    return m_internals->events.Events();
 }
 
 namespace detail

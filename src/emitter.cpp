@@ -82,16 +82,16 @@ ContactSample SampleAt(const b2Contact* contact, b2Vec2 point, b2Vec2 normal)
 struct Emitter::RuleContext
 {
     b2World& world;
-    ContactTracker& tracker;
+    const ContactTracker& tracker;
+    EventTracker& events;
     ParticleSystem& particles;
     ParticleBodyFilter particleBodies; // spawn point tests ignore body-backed particles' bodies
     EffectsStats& stats;
-    std::vector<EffectEvent>& events;
     const RuleDef& rule;
     const ParticleTypeDef& type;
     ParticleTypeId typeId;
     RuleStats& ruleStats;
-    std::span<TrackedContact> contacts;
+    std::span<const TrackedContact> contacts;
     float dt;
 };
 
@@ -104,16 +104,23 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed) : m_random(see
     // Room for the configured number of touching contacts (budget.contacts), each a pair of its own
     // with both manifold points at most.
     m_pairSteps.reserve(config.budget.contacts);
+    m_emissionCarry.reserve(config.budget.contacts);
     m_order.reserve(config.budget.contacts);
     m_samples.reserve(std::size_t{2} * config.budget.contacts);
 }
 
-void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker,
-                   ParticleSystem& particles, EffectsStats& stats, std::vector<EffectEvent>& events, float dt)
+void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTracker& tracker,
+                   EventTracker& events, ParticleSystem& particles, EffectsStats& stats, float dt)
 {
     if (m_pairSteps.size() < tracker.PairSlots())
     {
         m_pairSteps.resize(tracker.PairSlots());
+        m_emissionCarry.resize(tracker.PairSlots());
+    }
+    // A slot whose pair ended owes nothing to the next pair that takes it.
+    for (const EndedPair& ended : tracker.EndedPairs())
+    {
+        m_emissionCarry[ended.slot] = 0.0f;
     }
     // More particles than the pool holds in one step would only recycle each other.
     m_spawnBudget = static_cast<int>(std::min<std::uint32_t>(particles.Capacity(), 0x7FFFFFFFu));
@@ -123,10 +130,19 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
         const RuleDef& rule = config.rules[ruleIndex];
         const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
-        std::span<TrackedContact> contacts = tracker.Contacts(ruleId);
-        RuleContext context{world,  tracker,   particles, ParticleBodyFilter(particles),
-                            stats,  events,    rule,      config.particleTypes[typeId.index],
-                            typeId, ruleStats, contacts,  dt};
+        std::span<const TrackedContact> contacts = tracker.Contacts(ruleId);
+        RuleContext context{world,
+                            tracker,
+                            events,
+                            particles,
+                            ParticleBodyFilter(particles),
+                            stats,
+                            rule,
+                            config.particleTypes[typeId.index],
+                            typeId,
+                            ruleStats,
+                            contacts,
+                            dt};
         ruleStats.contacts = static_cast<std::uint32_t>(contacts.size());
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
@@ -151,7 +167,7 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, ContactTracker& 
 void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
 {
     const RuleDef& rule = context.rule;
-    TrackedContact& tracked = context.contacts[contactIndex];
+    const TrackedContact& tracked = context.contacts[contactIndex];
     PairStep& step = m_pairSteps[tracked.pair];
     if (step.stamp != m_stamp)
     {
@@ -159,16 +175,14 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
         step.stamp = m_stamp;
         m_order.push_back(tracked.pair);
     }
-    if (tracked.impactPending)
+    if (tracked.newTouch)
     {
-        tracked.impactPending = false;
         if (!std::isfinite(tracked.approachSpeed) || !Finite(tracked.approachPoint) ||
             !Finite(tracked.approachNormal))
         {
             context.stats.nonFiniteSamples += 1; // no impact from a body with non-finite state
         }
-        else if (tracked.approachSpeed >= rule.impactThreshold &&
-                 (step.impactContact == kNone || tracked.approachSpeed > step.impactSpeed))
+        else if (step.impactContact == kNone || tracked.approachSpeed > step.impactSpeed)
         {
             step.impactContact = contactIndex;
             step.impactSpeed = tracked.approachSpeed;
@@ -227,7 +241,6 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
 void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
 {
     const RuleDef& rule = context.rule;
-    TrackedPair& pair = context.tracker.Pair(pairSlot);
     PairStep& step = m_pairSteps[pairSlot];
     if (!std::isfinite(step.impulse))
     {
@@ -240,14 +253,22 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
     }
     if (step.impactContact != kNone)
     {
-        Impact(context, context.contacts[step.impactContact], step.impulse);
+        const TrackedContact& tracked = context.contacts[step.impactContact];
+        NewTouch touch;
+        touch.rule = tracked.rule;
+        touch.fixtureA = context.tracker.RuleFixtureA(tracked);
+        touch.fixtureB = context.tracker.RuleFixtureB(tracked);
+        touch.point = tracked.approachPoint;
+        touch.normal = tracked.swapped ? -tracked.approachNormal : tracked.approachNormal;
+        touch.approachSpeed = tracked.approachSpeed;
+        if (context.events.Impact(rule, touch, step.impulse))
+        {
+            Burst(context, tracked);
+        }
     }
     if (step.asleep)
     {
-        if (pair.scrapeId != 0)
-        {
-            context.events.push_back(context.tracker.EndScrape(pair, ScrapeEnd::asleep));
-        }
+        context.events.Asleep(pairSlot);
         return;
     }
 
@@ -307,12 +328,28 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
     }
     else
     {
-        EmitRate(context, pair, step, intensity);
+        EmitRate(context, pairSlot, step, intensity);
     }
-    UpdateScrape(context, pair, loudest, intensity, step.impulse);
+
+    PairMeasure measure;
+    measure.rule = context.tracker.Pair(pairSlot).rule;
+    measure.intensity = intensity;
+    measure.normalImpulse = step.impulse;
+    LoudestPoint point;
+    if (loudest != nullptr)
+    {
+        const TrackedContact& tracked = context.contacts[loudest->contact];
+        point.fixtureA = context.tracker.RuleFixtureA(tracked);
+        point.fixtureB = context.tracker.RuleFixtureB(tracked);
+        point.point = loudest->sample.point;
+        point.normal = tracked.swapped ? -loudest->sample.normal : loudest->sample.normal;
+        point.tangentialSpeed = TangentialVelocity(loudest->sample).Length();
+        measure.loudest = &point;
+    }
+    context.events.Scrape(rule, pairSlot, measure);
 }
 
-void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& step, float intensity)
+void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity)
 {
     const RuleDef& rule = context.rule;
     if (!(intensity > rule.threshold))
@@ -320,11 +357,12 @@ void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& 
         return;
     }
     const float rate = std::min(rule.maxRate, rule.ratePerIntensity * (intensity - rule.threshold));
-    const float owed = pair.emissionCarry + rate * context.dt;
+    float& emissionCarry = m_emissionCarry[pairSlot];
+    const float owed = emissionCarry + rate * context.dt;
     // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
     const int count = ClampedCount(owed, std::max(m_spawnBudget, 0));
     const float carry = owed - static_cast<float>(count);
-    pair.emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
+    emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)
     {
         return;
@@ -358,72 +396,8 @@ void Emitter::EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& 
     }
 }
 
-void Emitter::UpdateScrape(RuleContext& context, TrackedPair& pair, const Sample* loudest, float intensity,
-                           float impulseSum)
+void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
 {
-    EffectEvent event;
-    if (intensity > context.rule.threshold)
-    {
-        pair.quietTime = 0.0f;
-        if (pair.scrapeId == 0)
-        {
-            pair.scrapeId = context.tracker.NewEventId();
-            event.type = EffectEventType::scrapeBegan;
-        }
-        else
-        {
-            event.type = EffectEventType::scrapeChanged;
-        }
-    }
-    else if (pair.scrapeId != 0)
-    {
-        pair.quietTime += context.dt;
-        if (pair.quietTime >= context.rule.scrapeEndDelay)
-        {
-            context.events.push_back(context.tracker.EndScrape(pair, ScrapeEnd::belowThreshold));
-            return;
-        }
-        event.type = EffectEventType::scrapeChanged;
-    }
-    else
-    {
-        return;
-    }
-    if (loudest != nullptr)
-    {
-        const TrackedContact& tracked = context.contacts[loudest->contact];
-        pair.scrapeFixtureA = context.tracker.RuleFixtureA(tracked);
-        pair.scrapeFixtureB = context.tracker.RuleFixtureB(tracked);
-        pair.scrapePoint = loudest->sample.point;
-        pair.scrapeNormal = tracked.swapped ? -loudest->sample.normal : loudest->sample.normal;
-        event.tangentialSpeed = TangentialVelocity(loudest->sample).Length();
-    }
-    event.rule = pair.rule;
-    event.fixtureA = pair.scrapeFixtureA;
-    event.fixtureB = pair.scrapeFixtureB;
-    event.materialA = context.tracker.Materials().Recorded(event.fixtureA);
-    event.materialB = context.tracker.Materials().Recorded(event.fixtureB);
-    event.step = context.tracker.Step();
-    event.id = pair.scrapeId;
-    event.point = pair.scrapePoint;
-    event.normal = pair.scrapeNormal;
-    event.intensity = intensity;
-    event.normalImpulse = impulseSum;
-    context.events.push_back(event);
-}
-
-void Emitter::Impact(RuleContext& context, const TrackedContact& tracked, float impulseSum)
-{
-    EffectEvent event;
-    event.type = EffectEventType::impact;
-    FillContactFields(context, tracked, event);
-    event.id = context.tracker.NewEventId();
-    event.point = tracked.approachPoint;
-    event.normal = tracked.swapped ? -tracked.approachNormal : tracked.approachNormal;
-    event.approachSpeed = tracked.approachSpeed;
-    event.normalImpulse = impulseSum;
-    context.events.push_back(event);
-
     const float burst =
         std::min(context.rule.burstMax,
                  context.rule.burstPerSpeed * (tracked.approachSpeed - context.rule.impactThreshold));
@@ -438,16 +412,6 @@ void Emitter::Impact(RuleContext& context, const TrackedContact& tracked, float 
         }
         SpawnParticles(context, tracked, sample, tracked.approachSpeed, count);
     }
-}
-
-void Emitter::FillContactFields(const RuleContext& context, const TrackedContact& tracked, EffectEvent& event)
-{
-    event.rule = tracked.rule;
-    event.fixtureA = context.tracker.RuleFixtureA(tracked);
-    event.fixtureB = context.tracker.RuleFixtureB(tracked);
-    event.materialA = context.tracker.Materials().Recorded(event.fixtureA);
-    event.materialB = context.tracker.Materials().Recorded(event.fixtureB);
-    event.step = context.tracker.Step();
 }
 
 void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,

@@ -16,13 +16,16 @@
 //            the next;
 //   where    the count is shared out over the samples by their normal impulse (systematic sampling:
 //            one random offset, each sample gets the floor or the ceiling of its share), and each sample
-//            with particles finds one start point outside every solid (spawn.h).
+//            with particles finds one start point outside every solid (spawn_point.h).
 //
 // The tutorial's `perStep` emission stays per contact by definition: one particle per sample per step,
 // with the sample's own intensity, so it grows with the manifold points and segments as the tutorial's
-// does. Scrapes (one per pair) and impacts (at most one per pair and step: the fastest contact that began
-// touching) follow the pair too (events.h). When no start point outside every solid exists near a
-// sample (piles, crevices), its particles are not spawned and are counted as rejected.
+// does. When no start point outside every solid exists near a sample (piles, crevices), its particles are
+// not spawned and are counted as rejected.
+//
+// Events follow the pair too, but the emitter only measures: per pair it hands the event tracker
+// (events.h) its fastest new touch, then whether it sleeps or its intensity and loudest point; the
+// tracker decides impacts and scrapes and keeps their ids. An impact it accepts bursts particles here.
 //
 // Bounds: one Emit spawns at most the pool's capacity (more would only recycle each other; rates and
 // bursts are clamped before any float becomes an int), and a manifold point with non-finite inputs (a body
@@ -39,6 +42,7 @@
 #include "contactfx/intensity.h"
 #include "contactfx/particle_system.h"
 #include "contactfx/stats.h"
+#include "events.h"
 #include "random.h"
 
 #include <cstdint>
@@ -53,10 +57,15 @@ public:
     /// `config` must be valid (Validate) and is the one Emit will be given.
     Emitter(const EffectsConfig& config, std::uint64_t seed);
 
-    /// For every body pair of every rule: emits into `particles`, appends scrape and impact events to
-    /// `events` (events.h gives the order), updates `stats`.
-    void Emit(b2World& world, const EffectsConfig& config, ContactTracker& tracker, ParticleSystem& particles,
-              EffectsStats& stats, std::vector<EffectEvent>& events, float dt);
+    /// For every body pair of every rule: emits into `particles`, reports to `events` (after its
+    /// BeginStep for this step), updates `stats`.
+    void Emit(b2World& world, const EffectsConfig& config, const ContactTracker& tracker,
+              EventTracker& events, ParticleSystem& particles, EffectsStats& stats, float dt);
+    /// The fraction of a particle the pair in `slot` owes (rate emission), in [0, 1).
+    float EmissionCarry(std::uint32_t slot) const
+    {
+        return slot < m_emissionCarry.size() ? m_emissionCarry[slot] : 0.0f;
+    }
 
 private:
     struct RuleContext;
@@ -80,7 +89,7 @@ private:
         std::uint64_t stamp = 0;
         std::uint32_t first = kNone; // first sample, kNone when none
         std::uint32_t last = kNone;
-        std::uint32_t impactContact = kNone; // fastest contact that began touching, kNone when none
+        std::uint32_t impactContact = kNone; // fastest finite new touch (TrackedContact), kNone: none
         float impactSpeed = 0.0f;
         float impulse = 0.0f;        // N*s, sum over every manifold point of the pair's contacts
         float sampledImpulse = 0.0f; // N*s, sum over the sampled points: the weights' total
@@ -89,12 +98,8 @@ private:
 
     void Gather(RuleContext& context, std::uint32_t contactIndex);
     void UpdatePair(RuleContext& context, std::uint32_t pairSlot);
-    void EmitRate(RuleContext& context, TrackedPair& pair, const PairStep& step, float intensity);
-    void UpdateScrape(RuleContext& context, TrackedPair& pair, const Sample* loudest, float intensity,
-                      float impulseSum);
-    void Impact(RuleContext& context, const TrackedContact& tracked, float impulseSum);
-    static void FillContactFields(const RuleContext& context, const TrackedContact& tracked,
-                                  EffectEvent& event);
+    void EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity);
+    void Burst(RuleContext& context, const TrackedContact& tracked);
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
                         float intensity, int count);
 
@@ -102,6 +107,7 @@ private:
     std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
     std::uint64_t m_stamp = 0;               // one per rule per Emit
     std::vector<PairStep> m_pairSteps;       // by pair slot
+    std::vector<float> m_emissionCarry;      // by pair slot: fraction of a particle owed, kept across steps
     std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
     std::vector<Sample> m_samples;           // this rule's samples
     int m_spawnBudget = 0;                   // particles this Emit may still spawn (the pool's capacity)

@@ -40,6 +40,7 @@ struct TypeParams
     float radius;
     float lifeRate; // life lost per second
     float density;
+    float hitSpeed;
     std::uint16_t categoryBits;
     std::uint16_t maskBits;
     bool collide;
@@ -67,6 +68,22 @@ static_assert(sizeof(particles::TypeStep) <= 64, "a type's step constants fit in
 
 // Logical index and time left to live, for lowest-life recycling; ordered by time left, then age.
 using Candidate = std::pair<float, std::uint32_t>;
+
+// Hit groups room is made for at creation, beyond ParticleBudget::particleHits (and never more than the
+// pool's capacity, which bounds the hits of a step): a step with more distinct (type, body) pairs hit
+// allocates once, as they first happen.
+constexpr std::uint32_t kSpareHitGroups = 256;
+
+// One (type, body) group of a step's hits while they are summed, in order of first appearance.
+struct HitSums
+{
+    const b2Body* body;
+    std::uint16_t type;
+    std::uint32_t count;
+    float speed, x, y;            // sums, in particle order
+    std::uint32_t previousOfBody; // the group of the same body that appeared before this one, or kNoGroup
+};
+constexpr std::uint32_t kNoGroup = 0xFFFFFFFFu;
 
 } // namespace
 
@@ -105,6 +122,18 @@ struct ParticleSystem::Impl
     std::uint64_t lastBuilds = 0;
     particles::Workers workers;
     std::array<std::vector<b2Body*>, kMaxThreads> dead; // reserved to capacity when body-backed
+
+    // Particle hits, when recorded (maxHitGroups > 0 and a pool type collides; else all empty). A step's
+    // run writes its hits at hits[begin, begin + its count) (logical indices: a run has at most one hit
+    // per particle); after the join they are summed into hitSums (scratch), and the groups kept go to
+    // hitGroups (what Hits() shows). hitBodies: body -> its latest group in hitSums, emptied after each step
+    // (looked up, never iterated: addresses never decide an order).
+    std::uint32_t maxHitGroups = 0;
+    std::vector<particles::ParticleHit> hits;
+    std::vector<HitSums> hitSums;
+    std::vector<std::uint32_t> hitOrder;
+    std::vector<ParticleHitGroup> hitGroups;
+    detail::PointerMap hitBodies;
 
     // Lowest-life recycling: the next victims, cheapest first; invalid after a step.
     std::vector<Candidate> candidates;
@@ -195,6 +224,78 @@ struct ParticleSystem::Impl
         return created;
     }
 
+    // Adds `count` hits to the step's groups, in order: serial, runs in run order (logical particle order),
+    // so the sums are the same bits for any number of threads.
+    void SumHits(const particles::ParticleHit* first, std::uint32_t count)
+    {
+        // Particles spawned together mostly hit the same body: the last group found is tried first.
+        std::uint32_t last = kNoGroup;
+        for (const particles::ParticleHit& hit : std::span(first, count))
+        {
+            if (last != kNoGroup && hitSums[last].body == hit.body && hitSums[last].type == hit.type)
+            {
+                Add(hitSums[last], hit);
+                continue;
+            }
+            std::uint64_t* latest = hitBodies.Find(hit.body);
+            auto group = latest == nullptr ? kNoGroup : static_cast<std::uint32_t>(*latest);
+            while (group != kNoGroup && hitSums[group].type != hit.type)
+            {
+                group = hitSums[group].previousOfBody;
+            }
+            if (group == kNoGroup)
+            {
+                group = static_cast<std::uint32_t>(hitSums.size());
+                const std::uint32_t previous =
+                    latest == nullptr ? kNoGroup : static_cast<std::uint32_t>(*latest);
+                hitSums.push_back(HitSums{hit.body, hit.type, 0, 0.0f, 0.0f, 0.0f, previous});
+                hitBodies.Set(hit.body, group);
+            }
+            Add(hitSums[group], hit);
+            last = group;
+        }
+    }
+
+    static void Add(HitSums& sums, const particles::ParticleHit& hit)
+    {
+        sums.count += 1;
+        sums.speed += hit.speed;
+        sums.x += hit.x;
+        sums.y += hit.y;
+    }
+
+    // Turns the summed groups into hitGroups: all of them in order of first appearance, or when there are
+    // more than maxHitGroups, the maxHitGroups with the most hits (ties: the first to appear), still in
+    // order of first appearance. Empties the scratch; returns how many groups were dropped.
+    std::uint32_t KeepHitGroups()
+    {
+        const auto groups = static_cast<std::uint32_t>(hitSums.size());
+        hitOrder.clear();
+        for (std::uint32_t group = 0; group < groups; ++group)
+        {
+            hitOrder.push_back(group);
+            hitBodies.Erase(hitSums[group].body);
+        }
+        const std::uint32_t kept = std::min(groups, maxHitGroups);
+        if (kept < groups)
+        {
+            // A strict total order: the set kept does not depend on how nth_element gets there.
+            const auto larger = [this](std::uint32_t a, std::uint32_t b)
+            { return hitSums[a].count != hitSums[b].count ? hitSums[a].count > hitSums[b].count : a < b; };
+            std::nth_element(hitOrder.begin(), hitOrder.begin() + kept, hitOrder.end(), larger);
+            std::sort(hitOrder.begin(), hitOrder.begin() + kept);
+        }
+        for (std::uint32_t k = 0; k < kept; ++k)
+        {
+            const HitSums& sums = hitSums[hitOrder[k]];
+            const auto count = static_cast<float>(sums.count);
+            hitGroups.push_back(ParticleHitGroup{ParticleTypeId{sums.type}, sums.body, sums.count,
+                                                 sums.speed / count, b2Vec2(sums.x / count, sums.y / count)});
+        }
+        hitSums.clear();
+        return groups - kept;
+    }
+
     void BuildCandidates(std::uint32_t count, std::uint32_t capacity)
     {
         const particles::PoolArrays pool = Arrays(capacity);
@@ -229,6 +330,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
         params.radius = def.radius;
         params.lifeRate = 1.0f / def.lifetime;
         params.density = def.density;
+        params.hitSpeed = def.hitSpeed;
         params.categoryBits = def.categoryBits;
         params.maskBits = def.maskBits;
         params.collide = def.collide;
@@ -266,6 +368,16 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     if (impl.policy == RecyclePolicy::lowestLife)
     {
         impl.candidates.reserve(m_capacity);
+    }
+    if (budget.particleHits > 0 && impl.anyPoolCollides)
+    {
+        impl.maxHitGroups = budget.particleHits;
+        impl.hits.resize(m_capacity);
+        const std::uint32_t groups = std::min(m_capacity, budget.particleHits + kSpareHitGroups);
+        impl.hitSums.reserve(groups);
+        impl.hitOrder.reserve(groups);
+        impl.hitBodies.Reserve(groups);
+        impl.hitGroups.reserve(std::min(m_capacity, budget.particleHits));
     }
 }
 
@@ -381,12 +493,14 @@ struct StepJob
         std::uint32_t owner;     ///< the part (thread) that advanced it
         std::uint32_t deadBegin; ///< its dead bodies: [deadBegin, deadEnd) of its owner's list
         std::uint32_t deadEnd;
+        std::uint32_t hitCount; ///< its hits: [begin, begin + hitCount) of `hits`
     };
 
     particles::PoolArrays pool;
     const particles::TypeStep* steps;
     const particles::WorldGeometry* geometry;
     std::vector<b2Body*>* dead;
+    particles::ParticleHit* hits; ///< by logical index; null: hits are not recorded
     float dt;
     particles::StepTrust trust;
     std::uint32_t runCount;
@@ -403,10 +517,11 @@ struct StepJob
              run = job.next.fetch_add(1, std::memory_order_relaxed))
         {
             const auto deadBegin = static_cast<std::uint32_t>(dead.size());
-            const std::uint32_t kept =
-                particles::AdvanceRange(job.pool, job.steps, job.geometry, job.dt, job.trust, job.begin[run],
-                                        job.begin[run + 1], dead, job.counts[part]);
-            job.runs[run] = Run{kept, part, deadBegin, static_cast<std::uint32_t>(dead.size())};
+            particles::HitSink sink{job.hits == nullptr ? nullptr : job.hits + job.begin[run], 0};
+            const std::uint32_t kept = particles::AdvanceRange(
+                job.pool, job.steps, job.geometry, job.dt, job.trust, job.begin[run], job.begin[run + 1],
+                dead, job.counts[part], job.hits == nullptr ? nullptr : &sink);
+            job.runs[run] = Run{kept, part, deadBegin, static_cast<std::uint32_t>(dead.size()), sink.count};
         }
     }
 };
@@ -430,6 +545,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         step.lifeLoss = dt * params.lifeRate;
         step.side = particles::ParticleSide{params.radius, params.restitution,  params.friction,
                                             kRestSpeed,    params.categoryBits, params.maskBits};
+        step.hitSpeed = params.hitSpeed;
         step.bodyBacked = params.bodyBacked;
         step.sweeps = params.collide && !params.bodyBacked;
     }
@@ -458,6 +574,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
     job.steps = impl.steps.data();
     job.geometry = scan ? &impl.geometry : nullptr;
     job.dead = impl.dead.data();
+    job.hits = scan && impl.maxHitGroups > 0 ? impl.hits.data() : nullptr;
     job.dt = dt;
     job.trust = trust;
     job.runCount = parts == 1 ? 1u : std::min<std::uint32_t>(kRunsPerThread * parts, kMaxRuns);
@@ -491,6 +608,15 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         impl.dead[part].clear();
     }
     m_count = total;
+    impl.hitGroups.clear();
+    if (job.hits != nullptr)
+    {
+        for (std::uint32_t run = 0; run < job.runCount; ++run)
+        {
+            impl.SumHits(job.hits + job.begin[run], job.runs[run].hitCount);
+        }
+        m_counters.droppedHitGroups += impl.KeepHitGroups();
+    }
     for (unsigned part = 0; part < parts; ++part)
     {
         m_counters.crushed += job.counts[part].crushed;
@@ -528,6 +654,11 @@ ParticleView ParticleSystem::View() const
     return view;
 }
 
+std::span<const ParticleHitGroup> ParticleSystem::Hits() const
+{
+    return m_impl->hitGroups;
+}
+
 bool ParticleSystem::IsParticleBody(const b2Body* body) const
 {
     return m_impl->bodySet.Find(body) != nullptr;
@@ -550,6 +681,10 @@ std::size_t ParticleSystem::BytesPerSlot() const
     {
         bytes += sizeof(Candidate);
     }
+    if (impl.maxHitGroups > 0)
+    {
+        bytes += sizeof(particles::ParticleHit); // room for the particle's hit of a step
+    }
     return bytes;
 }
 
@@ -559,6 +694,8 @@ std::size_t ParticleSystem::MemoryBytes() const
     std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
     bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
     bytes += (impl.startX.capacity() + impl.startY.capacity()) * sizeof(float);
+    bytes += impl.hitSums.capacity() * sizeof(HitSums) + impl.hitOrder.capacity() * sizeof(std::uint32_t) +
+             impl.hitGroups.capacity() * sizeof(ParticleHitGroup);
     return bytes + impl.geometry.Bytes();
 }
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "contactfx/particle_system.h"
-#include "spawn.h"
+#include "spawn_point.h"
 
 namespace cfx::detail
 {

@@ -29,6 +29,8 @@ struct RunOptions
     std::uint64_t seed = 1;
     std::string stats;           ///< stats file; empty: none
     std::string events;          ///< events file (JSON Lines); empty: none
+    std::string audio;           ///< --audio: WAV of the built-in synthesizer; empty: none
+    std::string voices;          ///< --voices: voices file (JSON Lines); empty: none
     bool checkParticles = false; ///< ParticleSystemOptions::checkParticles
     unsigned threads = 0;        ///< --threads: 0 (default) the machine's; N forces N threads per step
 };

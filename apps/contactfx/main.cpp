@@ -2,7 +2,7 @@
 //
 //   contactfx demo      the tutorial scene, driven by a script, headless
 //   contactfx run       a registered scene (--scene NAME) or any RUBE scene file with effects
-//   contactfx render    pictures of the same: one PNG, a PNG sequence or a video
+//   contactfx render    pictures of the same: one PNG, a PNG sequence or a video (with sound)
 //   contactfx validate  every problem of scenes and effects configs
 //   contactfx preset    a built-in effects configuration as JSON
 //   contactfx bench     time the particles (pool against a body per particle) and the effects layer
@@ -31,6 +31,7 @@ namespace
 constexpr const char* kFooter = R"(Examples:
   contactfx demo --seconds 20 --stats out/demo-stats.json
   contactfx run --scene grinder --events out/grinder.jsonl
+  contactfx demo --seconds 20 --audio out/demo.wav --voices out/demo-voices.jsonl
   contactfx render --scene rockslide --out out/rockslide.mp4
 
 'contactfx help COMMAND' (or 'contactfx COMMAND --help') shows the options of a command.)";

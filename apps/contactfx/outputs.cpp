@@ -1,6 +1,7 @@
 #include "outputs.h"
 
 #include "contactfx/error.h"
+#include "contactfx/files/text_file.h"
 
 #include <atomic>
 #include <cerrno>
@@ -92,67 +93,6 @@ void RestoreHandlers()
 
 } // namespace
 
-std::string OutputProblem(const fs::path& file, const fs::path& given)
-{
-    if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
-    {
-        return "names no file";
-    }
-    struct stat info = {};
-    if (::stat(file.c_str(), &info) == 0)
-    {
-        if (S_ISDIR(info.st_mode))
-        {
-            return "is a directory, not a file";
-        }
-        if (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode))
-        {
-            return "is a device, not a regular file: give a file to write";
-        }
-        if (S_ISFIFO(info.st_mode))
-        {
-            return "is a FIFO, not a regular file: give a file to write";
-        }
-        if (!S_ISREG(info.st_mode))
-        {
-            return "is not a regular file";
-        }
-        // Permission bits, not access(): root may write a mode 444 file, but its owner meant it to stay.
-        if ((info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
-        {
-            char mode[8];
-            std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(info.st_mode & 07777));
-            return std::string("is read-only (mode ") + mode + "): not replaced";
-        }
-        if (::access(file.c_str(), W_OK) != 0)
-        {
-            return "cannot be written: " + Strerror(errno);
-        }
-    }
-    else if (errno != ENOENT)
-    {
-        return "cannot be written: " + Strerror(errno);
-    }
-    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
-    const fs::path shown = named.parent_path().empty() ? fs::path(".") : named.parent_path();
-    struct stat folderInfo = {};
-    if (::stat(folder.c_str(), &folderInfo) != 0)
-    {
-        return "folder " + Quoted(shown) + " does not exist";
-    }
-    if (!S_ISDIR(folderInfo.st_mode))
-    {
-        return Quoted(shown) + " is not a folder";
-    }
-    if ((folderInfo.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 ||
-        ::access(folder.c_str(), W_OK | X_OK) != 0)
-    {
-        return "folder " + Quoted(shown) + " is not writable";
-    }
-    return {};
-}
-
 OutputFiles::OutputFiles() = default;
 
 OutputFiles::~OutputFiles()
@@ -185,6 +125,13 @@ OutputFiles::Handle OutputFiles::Add(const std::string& flag, const fs::path& fi
     return m_outputs.size() - 1;
 }
 
+OutputFiles::Handle OutputFiles::AddScratch(const std::string& flag, const fs::path& file)
+{
+    const Handle handle = Add(flag, file);
+    m_outputs[handle].scratch = true;
+    return handle;
+}
+
 void OutputFiles::Prepare()
 {
     std::vector<Diagnostic> problems;
@@ -207,12 +154,16 @@ void OutputFiles::Prepare()
     std::map<std::string, const Output*> seen;
     for (const Output& output : m_outputs)
     {
+        if (output.scratch)
+        {
+            continue; // beside another output, whose checks cover its folder
+        }
         if (output.target.empty())
         {
             refuse(output, "names no file");
             continue;
         }
-        const std::string problem = OutputProblem(output.real, output.target);
+        const std::string problem = OutputFileProblem(output.real, output.target);
         if (!problem.empty())
         {
             refuse(output, problem);
@@ -302,13 +253,20 @@ void OutputFiles::Write(Handle handle, std::string_view bytes)
     CheckInterrupted();
     Output& output = m_outputs.at(handle);
     CloseStream(output, false);
-    std::FILE* file = std::fopen(output.temporary.c_str(), "wb");
+    PutBytes(output, "wb", 0, bytes);
+}
+
+void OutputFiles::PutBytes(const Output& output, const char* mode, std::uint64_t offset,
+                           std::string_view bytes) const
+{
+    std::FILE* file = std::fopen(output.temporary.c_str(), mode);
     if (file == nullptr)
     {
         Fail(output, "cannot write: " + Strerror(errno));
     }
     errno = 0;
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    bool ok = offset == 0 || ::fseeko(file, static_cast<off_t>(offset), SEEK_SET) == 0;
+    ok = ok && std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     ok = ok && std::fflush(file) == 0;
     const int error = errno;
     ok = std::fclose(file) == 0 && ok;
@@ -324,7 +282,7 @@ void OutputFiles::Append(Handle handle, std::string_view bytes)
     if (output.stream == nullptr)
     {
         CheckInterrupted();
-        output.stream = std::fopen(output.temporary.c_str(), "wb");
+        output.stream = std::fopen(output.temporary.c_str(), "ab"); // after WriteAt: on at the end
         if (output.stream == nullptr)
         {
             Fail(output, "cannot write: " + Strerror(errno));
@@ -338,6 +296,13 @@ void OutputFiles::Append(Handle handle, std::string_view bytes)
         CloseStream(output, false);
         Fail(output, "cannot write: " + Strerror(error));
     }
+}
+
+void OutputFiles::WriteAt(Handle handle, std::uint64_t offset, std::string_view bytes)
+{
+    Output& output = m_outputs.at(handle);
+    CloseStream(output, true); // Append() reopens it at the end
+    PutBytes(output, "r+b", offset, bytes);
 }
 
 void OutputFiles::CloseStream(Output& output, bool check)
@@ -363,6 +328,12 @@ void OutputFiles::Commit()
     for (Output& output : m_outputs)
     {
         CloseStream(output, true);
+        if (output.scratch)
+        {
+            ::unlink(output.temporary.c_str());
+            output.temporary.clear();
+            continue;
+        }
         // On disk before it replaces anything: after a crash, the old file or the whole new one.
         const int descriptor = ::open(output.temporary.c_str(), O_RDONLY | O_CLOEXEC);
         if (descriptor < 0 || ::fsync(descriptor) != 0)
@@ -376,7 +347,7 @@ void OutputFiles::Commit()
         }
         ::close(descriptor);
         // Something may have taken the target's place while the command ran.
-        const std::string problem = OutputProblem(output.real, output.target);
+        const std::string problem = OutputFileProblem(output.real, output.target);
         if (!problem.empty())
         {
             Fail(output, problem);
@@ -388,6 +359,10 @@ void OutputFiles::Commit()
     for (; done < m_outputs.size(); ++done)
     {
         Output& output = m_outputs[done];
+        if (output.scratch)
+        {
+            continue; // removed above
+        }
         struct stat existing = {};
         if (::stat(output.real.c_str(), &existing) == 0)
         {
@@ -407,6 +382,10 @@ void OutputFiles::Commit()
             }
             for (std::size_t i = done; i-- > 0;)
             {
+                if (m_outputs[i].scratch)
+                {
+                    continue;
+                }
                 if (!backups[i].empty())
                 {
                     ::rename(backups[i].c_str(), m_outputs[i].real.c_str());

@@ -3,7 +3,8 @@
 //
 // Every output flag (--stats, --events, --plot, render --out and its frames, preset --out) registers its
 // path here. Prepare() checks them all before anything is simulated and reports every problem at once:
-// - the path names a file in a folder that exists and can be written to;
+// - the path names a file in a folder that exists and can be written to (OutputFileProblem, the check
+//   every file write of contactfx makes: contactfx/files/text_file.h);
 // - an existing target is a regular file (not a directory, device, FIFO or socket: `--stats /dev/full`
 //   and `--stats /dev/null` are refused rather than replaced by a regular file) with a write permission
 //   bit set (a mode 444 file is refused even for root, who could write it);
@@ -19,6 +20,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -46,6 +48,11 @@ public:
     /// Registers `file`, given by option `flag` ("--stats"). Nothing is checked until Prepare().
     Handle Add(const std::string& flag, const std::filesystem::path& file);
 
+    /// Registers a scratch file for `flag`: a temporary file beside `file` (another output's target),
+    /// created by Prepare() like the others and always removed, never renamed into place (the audio of a
+    /// video before it is muxed in). Its target is not checked.
+    Handle AddScratch(const std::string& flag, const std::filesystem::path& file);
+
     /// Checks every registered output (see the file comment) and creates their temporary files. Throws
     /// InputError with one diagnostic per problem ("FILE: --flag: message"), leaving nothing behind.
     void Prepare();
@@ -63,6 +70,11 @@ public:
     /// the target when writing fails.
     void Append(Handle output, std::string_view bytes);
 
+    /// Overwrites bytes of `output`'s temporary file at `offset` (a header whose sizes are known at the
+    /// end), after what Append() wrote so far; later Appends go on at the end. Throws InputError naming the
+    /// target on failure.
+    void WriteAt(Handle output, std::uint64_t offset, std::string_view bytes);
+
     /// Throws std::runtime_error when SIGINT, SIGTERM or SIGHUP arrived since Prepare(): long loops call
     /// it so that an interrupted command unwinds and leaves no file.
     void CheckInterrupted() const;
@@ -79,9 +91,12 @@ private:
         std::filesystem::path real;      ///< where it is written: symbolic links resolved
         std::filesystem::path temporary; ///< empty until Prepare()
         std::FILE* stream = nullptr;     ///< Append()'s stream, open until Commit()
+        bool scratch = false;            ///< AddScratch(): removed at Commit(), never renamed
     };
 
     [[noreturn]] void Fail(const Output& output, const std::string& message) const;
+    // Opens the temporary file with `mode`, writes `bytes` at `offset`, closes it; Fail()s on error.
+    void PutBytes(const Output& output, const char* mode, std::uint64_t offset, std::string_view bytes) const;
     void CloseStream(Output& output, bool check);
     void RemoveTemporaries();
 
@@ -90,10 +105,5 @@ private:
     bool m_prepared = false;
     bool m_committed = false;
 };
-
-/// Why `file` cannot be an output, or an empty string when it can: it exists and is not a regular file,
-/// or has no write permission bit, or cannot be written; or its folder is missing or not writable.
-/// Messages name the folder as in `given` (the path as the user wrote it) when that is not empty.
-std::string OutputProblem(const std::filesystem::path& file, const std::filesystem::path& given = {});
 
 } // namespace cfx::cli

@@ -4,10 +4,13 @@
 // give the same pixels, and a single PNG at --time T is the frame a video would show at T. Everything
 // that can be checked is checked before the simulation runs: flags, the output's kind, every output
 // file (outputs.h: folder, kind of file, not an input), and that ffmpeg and ffprobe are there for a
-// video. All outputs (the picture or every frame of a sequence, and --stats) are written together at
-// the end, or none are.
+// video. An .mp4 gets the run's sound as its audio track (sound_output.h; muxed in by a second ffmpeg pass,
+// audio_mux.h), and --audio writes that sound as a WAV for any output; the audio covers what the pictures
+// show (a video's frames / fps, a single frame's time). All outputs (the picture or every frame of a
+// sequence, --stats, --audio) are written together at the end, or none are.
 #include "render_command.h"
 
+#include "audio_mux.h"
 #include "cli_common.h"
 #include "contactfx/error.h"
 #include "contactfx/render/frame.h"
@@ -15,6 +18,7 @@
 #include "outputs.h"
 #include "progress.h"
 #include "scenario.h"
+#include "sound_output.h"
 
 #include <box2d/b2_body.h>
 #include <cmath>
@@ -38,9 +42,41 @@ struct RenderOptions
     int width = 1280;           ///< px
     int height = 720;           ///< px
     double fps = 30.0;
-    std::string follow = "car"; ///< body the camera follows; empty or absent: the whole world
-    double view = 14.0;         ///< m across the picture when following
+    std::string follow = "car";           ///< body the camera follows; empty or absent: the whole world
+    double view = 14.0;                   ///< m across the picture when following
+    bool debug = false;                   ///< --debug: every debug layer
+    std::vector<std::string> debugLayers; ///< --debug-layers: some of them (kDebugLayerNames)
+    bool scaleBar = false;
 };
+
+// The names --debug-layers takes, each with the layer it switches on.
+struct DebugLayerName
+{
+    const char* name;
+    bool DebugLayers::*layer;
+};
+constexpr DebugLayerName kDebugLayerNames[] = {
+    {"points", &DebugLayers::manifoldPoints}, {"normals", &DebugLayers::normals},
+    {"impulses", &DebugLayers::impulses},     {"rules", &DebugLayers::ruleNames},
+    {"velocities", &DebugLayers::velocities},
+};
+
+DebugLayers SelectedDebugLayers(const RenderOptions& options, float stepTime)
+{
+    DebugLayers layers = options.debug ? DebugLayers::All() : DebugLayers{};
+    for (const std::string& wanted : options.debugLayers)
+    {
+        for (const DebugLayerName& entry : kDebugLayerNames)
+        {
+            if (wanted == entry.name)
+            {
+                layers.*entry.layer = true;
+            }
+        }
+    }
+    layers.stepTime = stepTime;
+    return layers;
+}
 
 constexpr int kMaxSide = 8192;
 
@@ -150,10 +186,24 @@ int Render(RenderOptions options)
     {
         stats = outputs.Add("--stats", options.run.stats);
     }
+    // The audio covers what the pictures show: up to the one frame's time, or the whole video.
+    const bool mp4 = kind == render::OutputKind::mp4;
+    const double audioEnd = single ? firstTime : static_cast<double>(frames) / options.fps;
+    if (!options.run.audio.empty() || mp4)
+    {
+        CheckAudioSeconds(audioEnd, options.run.audio.empty() ? "--out" : "--audio");
+    }
+    SoundOutput sound(outputs, options.run.audio, "", mp4 ? std::filesystem::path(options.out) : "");
+    std::optional<OutputFiles::Handle> muxed; // the video with its audio, before it replaces the video
+    if (mp4)
+    {
+        muxed = outputs.AddScratch("--out", options.out + ".muxed.mp4");
+    }
     outputs.Prepare();
 
     Simulation simulation(def);
     PrintSceneWarnings(simulation.GetScene());
+    sound.Start(simulation.GetEffects().Config(), def.seed);
 
     const b2Body* followed = nullptr;
     if (!options.follow.empty())
@@ -163,24 +213,26 @@ int Render(RenderOptions options)
             followed = body->body;
         }
     }
-    render::Camera camera = render::MakeCamera(options.width, options.height,
-                                               static_cast<float>(options.view), b2Vec2(0.0f, 0.0f));
+    Camera camera =
+        MakeCamera(options.width, options.height, static_cast<float>(options.view), b2Vec2(0.0f, 0.0f));
     // The followed body sits a little below the middle: what flies up stays in view.
     const float lift = 0.2f * static_cast<float>(options.height) / camera.pixelsPerMetre;
     constexpr float kSmoothing = 0.5f; // s: the view eases up and down, never sideways
     if (followed != nullptr)
     {
-        render::Follow(camera, *followed, lift);
+        Follow(camera, *followed, lift);
     }
     else
     {
-        render::FitWorld(camera, *simulation.GetScene().world);
+        FitWorld(camera, *simulation.GetScene().world);
     }
 
     render::CairoRenderer renderer(options.width, options.height);
-    render::FrameOptions look;
+    FrameOptions look;
     look.caption = (def.config.name.empty() ? std::string("custom") : def.config.name) + " effects";
-    render::FrameScratch scratch;
+    look.scaleBar = options.scaleBar;
+    look.debug = SelectedDebugLayers(options, simulation.Dt());
+    FrameScratch scratch;
     // ffmpeg writes into the video's temporary file; PNG frames go to theirs one by one.
     std::optional<render::VideoSink> sink;
     if (video)
@@ -200,9 +252,10 @@ int Render(RenderOptions options)
         while (simulation.Steps() < steps)
         {
             scenario.Step(simulation);
+            sound.AfterStep(simulation.GetEffects(), simulation.Dt());
             if (followed != nullptr)
             {
-                render::FollowSmoothly(camera, *followed, lift, simulation.Dt(), kSmoothing);
+                FollowSmoothly(camera, *followed, lift, simulation.Dt(), kSmoothing);
             }
         }
         render::RenderFrame(simulation.GetEffects(), simulation.Time(), camera, look, renderer, scratch);
@@ -233,6 +286,23 @@ int Render(RenderOptions options)
     {
         outputs.Write(*stats, StatsJson(simulation.GetEffects(), def.hz, &runHash));
     }
+    if (sound.Active())
+    {
+        // The last frame shows the moment it starts; its sound lasts one frame more (stats end at it).
+        const auto audioSteps = static_cast<std::uint64_t>(std::llround(audioEnd * options.run.hz));
+        while (simulation.Steps() < audioSteps)
+        {
+            scenario.Step(simulation);
+            sound.AfterStep(simulation.GetEffects(), simulation.Dt());
+        }
+        sound.Finish(audioEnd);
+    }
+    if (muxed)
+    {
+        const std::filesystem::path& silentVideo = outputs.Temporary(pictures.front());
+        MuxAudio(silentVideo, sound.WavFile(), outputs.Temporary(*muxed), options.out);
+        std::filesystem::rename(outputs.Temporary(*muxed), silentVideo);
+    }
     outputs.Commit();
     std::printf("contactfx render: wrote %s (%lld frame%s, %dx%d, %.2f s simulated)\n", options.out.c_str(),
                 frames, frames == 1 ? "" : "s", options.width, options.height,
@@ -251,10 +321,16 @@ void RegisterRenderCommand(CLI::App& app, int& result)
     AddSceneOptions(*render, options->run, "RUBE JSON scene (or --scene NAME, or --demo)");
     render->add_flag("--demo", options->demo, "The demo's scene: the same as --scene tutorial");
     render
-        ->add_option("--out", options->out,
-                     "FILE.png (one frame), DIR/frame_%04d.png (a sequence), FILE.mp4 or FILE.gif (ffmpeg)")
+        ->add_option(
+            "--out", options->out,
+            "FILE.png (one frame), DIR/frame_%04d.png (a sequence), FILE.mp4 (with a 48 kHz audio track) "
+            "or FILE.gif (ffmpeg)")
         ->required();
     AddRunOptions(*render, options->run, false);
+    render->add_option(
+        "--audio", options->run.audio,
+        "Also write the sound to this WAV file (48 kHz, 16-bit mono; an .mp4 gets it as its audio "
+        "track anyway; docs/sound.md)");
     render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)");
     render->add_option("--width", options->width, "Image width, px")->capture_default_str();
     render->add_option("--height", options->height, "Image height, px")->capture_default_str();
@@ -266,6 +342,22 @@ void RegisterRenderCommand(CLI::App& app, int& result)
         ->capture_default_str();
     render->add_option("--view", options->view, "Metres shown across the picture when following a body")
         ->capture_default_str();
+    render->add_flag("--scale-bar", options->scaleBar,
+                     "Draw a scale bar of a round length in the bottom left corner");
+    render->add_flag("--debug", options->debug,
+                     "Draw every debug layer: contact points coloured by intensity (blue 0, green the rule's "
+                     "threshold, red twice it, ringed above it), normals (cyan), normal impulses (magenta), "
+                     "rule names, particle velocities");
+    std::vector<std::string> layerNames;
+    for (const DebugLayerName& entry : kDebugLayerNames)
+    {
+        layerNames.emplace_back(entry.name);
+    }
+    render
+        ->add_option("--debug-layers", options->debugLayers,
+                     "Some debug layers, comma-separated: points, normals, impulses, rules, velocities")
+        ->delimiter(',')
+        ->check(CLI::IsMember(layerNames));
     render->callback([options, &result] { result = Guarded([&] { return Render(*options); }); });
 }
 

@@ -5,6 +5,7 @@
 #include "outputs.h"
 #include "plot_option.h"
 #include "scenario.h"
+#include "sound_output.h"
 
 #include <cmath>
 #include <cstdio>
@@ -68,6 +69,10 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
 {
     CheckRunOptions(options);
     CheckPlotFile(plotFile);
+    if (!options.audio.empty())
+    {
+        CheckAudioSeconds(options.seconds, "--audio");
+    }
     const Scenario scenario = SelectScenario(options);
     OutputFiles outputs;
     AddScenarioInputs(outputs, options, scenario);
@@ -86,10 +91,12 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     {
         plotOutput = outputs.Add("--plot", plotFile);
     }
+    SoundOutput sound(outputs, options.audio, options.voices);
     outputs.Prepare();
 
     Simulation simulation(scenario.def);
     PrintSceneWarnings(simulation.GetScene());
+    sound.Start(simulation.GetEffects().Config(), options.seed);
     PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));
     for (std::uint64_t i = 0; i < steps; ++i)
@@ -97,9 +104,9 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
         scenario.Step(simulation);
         plot.AfterStep(simulation.GetEffects(), simulation.Dt());
         outputs.CheckInterrupted();
-        if (events)
+        try
         {
-            try
+            if (events)
             {
                 for (const EffectEvent& event : simulation.GetEffects().Events())
                 {
@@ -107,11 +114,20 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
                                    EventJsonLine(event, simulation.GetEffects().Config(), options.hz));
                 }
             }
-            catch (const InputError& error)
-            {
-                throw AfterTime(error, static_cast<double>(simulation.Time()));
-            }
+            sound.AfterStep(simulation.GetEffects(), simulation.Dt());
         }
+        catch (const InputError& error)
+        {
+            throw AfterTime(error, static_cast<double>(simulation.Time()));
+        }
+    }
+    try
+    {
+        sound.Finish(static_cast<double>(simulation.Time()));
+    }
+    catch (const InputError& error)
+    {
+        throw AfterTime(error, static_cast<double>(simulation.Time()));
     }
     const StateHash runHash = simulation.RunHash();
     if (stats)
@@ -124,7 +140,18 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     }
     outputs.Commit();
     PrintSummary(simulation, options, what);
+    std::fputs(sound.Summary().c_str(), stdout);
     return kExitOk;
+}
+
+void AddSoundOptions(CLI::App& command, RunOptions& options)
+{
+    command.add_option(
+        "--audio", options.audio,
+        "Write the sound of the run to this WAV file (48 kHz, 16-bit mono, synthesized from the "
+        "voices; docs/sound.md)");
+    command.add_option("--voices", options.voices,
+                       "Write the voices started and stopped as JSON Lines to this file (docs/sound.md)");
 }
 
 } // namespace
@@ -138,6 +165,7 @@ void RegisterRunCommands(CLI::App& app, int& result)
     AddRunOptions(*demo, *demoOptions, true);
     demo->add_option("--events", demoOptions->events,
                      "Write scrape and impact events as JSON Lines to this file");
+    AddSoundOptions(*demo, *demoOptions);
     AddPlotOption(*demo, *demoPlot);
     demo->callback(
         [demoOptions, demoPlot, &result]
@@ -159,6 +187,7 @@ void RegisterRunCommands(CLI::App& app, int& result)
     AddRunOptions(*run, *runOptions, false);
     run->add_option("--events", runOptions->events,
                     "Write scrape and impact events as JSON Lines to this file");
+    AddSoundOptions(*run, *runOptions);
     AddPlotOption(*run, *runPlot);
     run->callback(
         [runOptions, runPlot, &result]

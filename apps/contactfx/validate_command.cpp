@@ -14,10 +14,10 @@
 #include "validate_command.h"
 
 #include "cli_common.h"
+#include "contactfx/files/text_file.h"
 #include "contactfx/scene/effects_json.h"
 #include "contactfx/scene/rube.h"
 #include "contactfx/scene/scene_materials.h"
-#include "contactfx/scene/text_file.h"
 
 #include <iostream>
 #include <memory>

@@ -100,13 +100,22 @@ std::string PairName(const RuleDef& rule)
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz)
 {
     using Json = nlohmann::ordered_json;
-    static constexpr const char* kTypes[] = {"scrape_began", "scrape_changed", "scrape_ended", "impact"};
+    static constexpr const char* kTypes[] = {"scrape_began", "scrape_changed", "scrape_ended", "impact",
+                                             "particle_hits"};
     static constexpr const char* kReasons[] = {"none", "contact_ended", "asleep", "below_threshold",
                                                "destroyed"};
     Json line;
     line["type"] = kTypes[static_cast<int>(event.type)];
     line["step"] = event.step;
     line["time"] = static_cast<double>(event.step + 1) / hz;
+    if (event.type == EffectEventType::particleHits)
+    {
+        line["particle_type"] = config.particleTypes[event.particleType.index].name;
+        line["count"] = event.count;
+        line["point"] = Json::array({event.point.x, event.point.y});
+        line["mean_speed"] = event.approachSpeed;
+        return line.dump() + "\n";
+    }
     line["id"] = event.id;
     line["pair"] = PairName(config.rules[event.rule.index]);
     line["point"] = Json::array({event.point.x, event.point.y});

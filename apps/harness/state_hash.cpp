@@ -29,6 +29,12 @@ void StateHash::Add(const EffectEvent& event)
     const float values[] = {event.point.x,   event.point.y,         event.normal.x,      event.normal.y,
                             event.intensity, event.tangentialSpeed, event.normalImpulse, event.approachSpeed};
     Add(values, sizeof values);
+    if (event.type == EffectEventType::particleHits)
+    {
+        // Not the body: its address differs from run to run.
+        Add(&event.particleType.index, sizeof event.particleType.index);
+        Add(&event.count, sizeof event.count);
+    }
 }
 
 void StateHash::Add(std::span<const EffectEvent> events)

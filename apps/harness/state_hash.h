@@ -2,8 +2,8 @@
 //
 // Box2D's and Jolt's tests keep hashes of reference runs and compare every build against them; this is the
 // same for contactfx: FNV-1a (64 bits) over every event in the order it was reported, then over the live
-// particles at the end, bit for bit. Fixture addresses are left out (they change from run to run); all
-// else an event carries is in. The same scene, config, seed, rate and drive give the same hash with any
+// particles at the end, bit for bit. Fixture and body addresses are left out (they change from run to run);
+// all else an event carries is in. The same scene, config, seed, rate and drive give the same hash with any
 // number of threads, on any machine with the same floating-point behaviour (x86-64 SSE2, no -ffast-math).
 #pragma once
 

@@ -1,11 +1,12 @@
-// The frame loop: input, one simulation step, the world view, the panels. The keys follow the
-// tutorial (a / d drive, s brakes, 4 four-wheel drive, f follows the car) and Box2D's testbed
-// (p pause, o single step, r restart).
+// The frame loop: input, one simulation step, the world view, the panels. The keys (keys.h) follow the
+// tutorial (a / d drive, s brakes, 4 four-wheel drive, f follows the car) and Box2D's testbed (p pause,
+// o single step, r restart, x / z zoom in / out, [ ] scenes, Tab hides the panels, Space launches).
 #include "app.h"
 
-#include "contactfx/render/palette.h"
+#include "contactfx/draw/frame_builder.h"
 #include "contactfx/scene/effects_json.h"
 #include "gl_draw.h"
+#include "keys.h"
 #include "layout.h"
 #include "panels.h"
 #include "screenshot.h"
@@ -28,8 +29,6 @@ namespace cfx::testbed
 namespace
 {
 
-constexpr float kZoomStep = 1.1f;   // per wheel notch or key press
-constexpr float kPanPixels = 40.0f; // per arrow key press
 // Without interaction only the last frames are drawn (a couple, so that ImGui's layout settles); the
 // ones before are simulated only, one step each, as when drawn.
 constexpr int kDrawnFrames = 3;
@@ -64,7 +63,7 @@ struct App
     {
         int width = 0, height = 0;
         window.Size(width, height);
-        return WorldViewRect(width, height);
+        return WorldViewRect(width, height, !panels.hidden);
     }
 
     // World point under a cursor position (window px), or nothing outside the world view.
@@ -94,52 +93,15 @@ struct App
         {
             return;
         }
-        const PixelRect view = View();
-        switch (key)
+        const KeyAction what = ActionForKey(key);
+        if (what == KeyAction::quit)
         {
-        case GLFW_KEY_P:
-            session.paused = !session.paused;
-            break;
-        case GLFW_KEY_O:
-            session.paused = true;
-            session.stepOnce = true;
-            break;
-        case GLFW_KEY_R:
-            RestartScene(session, panels.sceneError);
-            break;
-        case GLFW_KEY_F:
-            session.followCar = !session.followCar && session.Sim().GetCar().has_value();
-            break;
-        case GLFW_KEY_4:
-            session.ToggleFourWheelDrive();
-            break;
-        case GLFW_KEY_HOME:
-            session.ResetView(view.width, view.height);
-            break;
-        case GLFW_KEY_Z:
-            session.Zoom(1.0f / kZoomStep, session.Camera().center);
-            break;
-        case GLFW_KEY_X:
-            session.Zoom(kZoomStep, session.Camera().center);
-            break;
-        case GLFW_KEY_LEFT:
-            session.Pan(b2Vec2(kPanPixels, 0.0f));
-            break;
-        case GLFW_KEY_RIGHT:
-            session.Pan(b2Vec2(-kPanPixels, 0.0f));
-            break;
-        case GLFW_KEY_UP:
-            session.Pan(b2Vec2(0.0f, kPanPixels));
-            break;
-        case GLFW_KEY_DOWN:
-            session.Pan(b2Vec2(0.0f, -kPanPixels));
-            break;
-        case GLFW_KEY_ESCAPE:
             glfwSetWindowShouldClose(window.Handle(), GLFW_TRUE);
-            break;
-        default:
-            break;
+            return;
         }
+        const PixelRect view = View();
+        KeyTarget target{session, panels.hidden, panels.sceneError, view.width, view.height};
+        ApplyKey(what, target);
     }
 
     void OnMouseButton(int button, int action)
@@ -191,7 +153,7 @@ struct App
         b2Vec2 world;
         if (!ImGui::GetIO().WantCaptureMouse && WorldAt(Cursor(), world))
         {
-            session.Zoom(std::pow(kZoomStep, -static_cast<float>(offset)), world);
+            session.Zoom(std::pow(kKeyZoomStep, -static_cast<float>(offset)), world);
         }
     }
 
@@ -230,11 +192,20 @@ void InstallCallbacks(GLFWwindow* window, App& app)
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double y) { FromWindow(w).OnScroll(y); });
 }
 
-void DrawWorld(Session& session, GlDraw& draw, const DrawToggles& toggles,
-               const render::ShapePalette& palette, std::vector<ParticleSprite>& sprites)
+// The world view as a draw list, as the Cairo pictures build it (RecordWorldShapes, AddParticles), with
+// what the panels switch on.
+void DrawWorld(Session& session, GlRenderer& renderer, const DrawToggles& toggles, const FrameOptions& look,
+               FrameScratch& scratch)
 {
     const Effects& effects = session.Sim().GetEffects();
-    draw.Begin(session.Camera());
+    DrawList& list = scratch.list;
+    list.Begin(session.Camera(), look.style.background);
+    list.backgroundBottom = look.style.backgroundBottom;
+    ShapeRecorder draw(list, look.style);
+    if (toggles.shapes)
+    {
+        RecordWorldShapes(effects, look.palette, draw);
+    }
     if (toggles.joints)
     {
         b2World& world = *session.Sim().GetScene().world;
@@ -243,22 +214,13 @@ void DrawWorld(Session& session, GlDraw& draw, const DrawToggles& toggles,
         world.DebugDraw();
         world.SetDebugDraw(nullptr);
     }
-    if (toggles.shapes)
-    {
-        render::DrawShapes(effects, draw, palette);
-    }
-    if (toggles.particles)
-    {
-        CollectSprites(effects, sprites);
-        draw.DrawParticles(sprites);
-    }
     // A ring where each recent event happened: impacts large and red, scrapes small (green while they
     // go on, grey when they end). They fade out over half a second.
     const float now = session.Sim().Time();
     for (const LoggedEvent& logged : session.Events().Entries())
     {
         const float age = now - logged.time;
-        if (age > 0.5f)
+        if (!toggles.events || age > 0.5f || logged.event.type == EffectEventType::particleHits) // too many
         {
             continue;
         }
@@ -271,7 +233,44 @@ void DrawWorld(Session& session, GlDraw& draw, const DrawToggles& toggles,
                    : (ended ? b2Color(0.6f, 0.6f, 0.6f, fade) : b2Color(0.3f, 1.0f, 0.4f, fade));
         draw.DrawCircle(event.point, impact ? 0.15f + 0.05f * event.approachSpeed : 0.12f, color);
     }
-    draw.End();
+    scratch.sprites.clear();
+    if (toggles.particles)
+    {
+        CollectSprites(effects, scratch.sprites);
+        AddParticles(list, scratch.sprites, look.style);
+    }
+    list.shapesUnderSprites = list.shapes.size(); // the debug layers show over the particles
+    DebugLayers debug = toggles.debug;
+    debug.stepTime = session.Sim().Dt();
+    AddDebugLayers(list, effects, scratch.sprites, debug, look.style);
+    if (toggles.scaleBar)
+    {
+        list.overlay.scaleBar = MakeScaleBar(list.camera);
+    }
+    renderer.Render(list);
+}
+
+// The list's text (rule names, the scale bar's length), which the OpenGL renderer leaves to ImGui, over the
+// world view whose top left corner is at `origin` (window px).
+void DrawListText(const DrawList& list, ImVec2 origin)
+{
+    ImDrawList& draw = *ImGui::GetBackgroundDrawList();
+    for (const TextLabel& label : list.labels)
+    {
+        const ImVec2 at(origin.x + label.at.x, origin.y + label.at.y - ImGui::GetFontSize());
+        draw.AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 180), label.text.c_str());
+        draw.AddText(at,
+                     ImGui::ColorConvertFloat4ToU32(
+                         ImVec4(label.color.r, label.color.g, label.color.b, label.color.a)),
+                     label.text.c_str());
+    }
+    const ScaleBar& bar = list.overlay.scaleBar;
+    if (bar.shown)
+    {
+        draw.AddText(
+            ImVec2(origin.x + bar.from.x + 4.0f, origin.y + bar.from.y - 6.0f - ImGui::GetFontSize()),
+            IM_COL32(235, 235, 235, 230), bar.label.c_str());
+    }
 }
 
 } // namespace
@@ -290,14 +289,17 @@ int RunTestbed(const Options& options)
     Window window(kDefaultWidth, kDefaultHeight, "contactfx testbed", !headless);
     PanelState panels;
     panels.toggles.particles = !options.hideParticles;
+    if (options.debug)
+    {
+        panels.toggles.debug = DebugLayers::All();
+    }
     App app{window, session, panels};
     InstallCallbacks(window.Handle(), app);
     window.StartUi();
 
-    const render::RenderStyle style;
-    const render::ShapePalette palette = render::TutorialPalette();
-    GlDraw draw(style);
-    std::vector<ParticleSprite> sprites;
+    const FrameOptions look;
+    GlRenderer renderer;
+    FrameScratch scratch;
     {
         const PixelRect view = app.View();
         session.ResetView(view.width, view.height);
@@ -336,15 +338,19 @@ int RunTestbed(const Options& options)
 
         int width = 0, height = 0;
         window.Size(width, height);
-        const PixelRect view = WorldViewRect(width, height);
+        const PixelRect view = WorldViewRect(width, height, !panels.hidden);
         session.Resize(view.width, view.height);
         glViewport(0, 0, width, height);
-        glClearColor(style.background.r, style.background.g, style.background.b, 1.0f);
+        const Color& background = look.style.background;
+        glClearColor(background.r, background.g, background.b, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         glViewport(view.x, height - view.y - view.height, view.width, view.height);
-        DrawWorld(session, draw, panels.toggles, palette, sprites);
-
-        DrawPanels(session, panels, width, height, kPanelWidth);
+        DrawWorld(session, renderer, panels.toggles, look, scratch);
+        DrawListText(scratch.list, ImVec2(static_cast<float>(view.x), static_cast<float>(view.y)));
+        if (!panels.hidden)
+        {
+            DrawPanels(session, panels, width, height, kPanelWidth);
+        }
         window.RenderUi();
         if (headless && frame == options.frames && !options.screenshot.empty())
         {

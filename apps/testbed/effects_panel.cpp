@@ -58,11 +58,15 @@ std::vector<std::string> ParticleTypeNames(const EffectsConfig& draft)
     return names;
 }
 
+// A number typed straight in (one click puts the cursor in the field), or stepped by its - and + buttons
+// (ctrl: ten steps); kept in the field's range. Typing is applied when the field is left, a button at once.
 bool Number(const char* label, float& value, const FieldRange& range, float step)
 {
     const DragBounds bounds = DragBoundsOf(range, step);
-    ImGui::DragFloat(label, &value, bounds.speed, bounds.low, bounds.high, kNumberFormat);
-    return Finished();
+    const bool typing = ImGui::GetIO().WantTextInput;
+    const bool changed = ImGui::InputFloat(label, &value, bounds.speed, 10.0f * bounds.speed, kNumberFormat);
+    value = std::clamp(value, bounds.low, bounds.high);
+    return Finished() || (changed && !typing);
 }
 
 // One widget per field of the table, labelled with its name and unit and bounded by its range.
@@ -294,6 +298,34 @@ bool RulesTab(EffectsConfig& draft)
     return finished;
 }
 
+// The `sound` section's fields, then its sound rules (docs/sound.md).
+bool SoundTab(EffectsConfig& draft)
+{
+    bool finished = EditFields(draft.sound, SoundFields(), draft);
+    ImGui::TextDisabled("sound rules (a pair rule without one takes the defaults)");
+    finished |= EditList(
+        draft.sound.rules, "Add sound rule",
+        [&](SoundRuleDef& rule, bool& remove)
+        {
+            bool edited = false;
+            if (ImGui::TreeNode("sound rule", "%s + %s", rule.materialA.c_str(), rule.materialB.c_str()))
+            {
+                edited = EditFields(rule, SoundRuleFields(), draft);
+                remove = ImGui::SmallButton("remove this sound rule");
+                ImGui::TreePop();
+            }
+            return edited;
+        },
+        [&]
+        {
+            SoundRuleDef rule;
+            rule.materialA = draft.materials.empty() ? "" : draft.materials.front();
+            rule.materialB = rule.materialA;
+            return rule;
+        });
+    return finished;
+}
+
 bool AssignmentsTab(EffectsConfig& draft)
 {
     return EditList(
@@ -349,6 +381,11 @@ void EffectsPanel(Session& session, EffectsEditor& editor)
         if (ImGui::BeginTabItem("Budget"))
         {
             finished |= EditFields(editor.draft.budget, BudgetFields(), editor.draft);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Sound"))
+        {
+            finished |= SoundTab(editor.draft);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();

@@ -7,10 +7,18 @@ namespace cfx::testbed
 
 std::string DescribeEvent(const EffectEvent& event, const EffectsConfig& config, float time)
 {
-    static constexpr const char* kTypes[] = {"began", "scrape", "ended", "impact"};
+    static constexpr const char* kTypes[] = {"began", "scrape", "ended", "impact", "hits"};
     static constexpr const char* kEnds[] = {"", "contact ended", "asleep", "below threshold", "destroyed"};
-    const RuleDef& rule = config.rules[event.rule.index];
     char line[160];
+    if (event.type == EffectEventType::particleHits)
+    {
+        std::snprintf(line, sizeof line, "%5.2f %-6s %u %s, %.1f m/s", static_cast<double>(time),
+                      kTypes[static_cast<int>(event.type)], event.count,
+                      config.particleTypes[event.particleType.index].name.c_str(),
+                      static_cast<double>(event.approachSpeed));
+        return line;
+    }
+    const RuleDef& rule = config.rules[event.rule.index];
     const int prefix = std::snprintf(line, sizeof line, "%5.2f %-6s #%-3u %s+%s ", static_cast<double>(time),
                                      kTypes[static_cast<int>(event.type)], event.id, rule.materialA.c_str(),
                                      rule.materialB.c_str());

@@ -1,8 +1,8 @@
 // contactfx-testbed: the effect events of the last moments, for the events panel and the markers.
 //
-// The session records every step's events (scrapes and impacts, events.h) with the simulated time they
-// happened; the panel lists them newest first and the view marks where the recent ones happened. Bounded:
-// the oldest entries go once there are kCapacity.
+// The session records every step's events (scrapes, impacts and particle hits, events.h) with the simulated
+// time they happened; the panel lists them newest first and the view marks where the recent ones happened.
+// Bounded: the oldest entries go once there are kCapacity.
 #pragma once
 
 #include "contactfx/effects.h"

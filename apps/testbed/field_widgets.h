@@ -17,12 +17,12 @@ namespace cfx::testbed
 inline constexpr const char* kNumberFormat = "%.3f";
 inline constexpr float kShownStep = 0.001f;
 
-/// What a number widget may drag to, and how fast.
+/// What a number widget keeps its value in, and its step.
 struct DragBounds
 {
     float low = 0.0f;
     float high = 0.0f;
-    float speed = 0.0f; ///< per pixel
+    float speed = 0.0f; ///< one press of its - or + button
 };
 
 /// The field's range, an exclusive minimum moved up by the smallest step the widget shows.

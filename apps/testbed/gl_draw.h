@@ -1,74 +1,66 @@
-// contactfx-testbed: the drawing interface (draw.h) in OpenGL 3.3 core.
+// contactfx-testbed: the OpenGL 3.3 core backend of the draw list (contactfx/draw/draw_list.h), a peer of
+// the Cairo renderer: the list decides the look, this only rasterises it.
 //
-// Shapes come through b2Draw, particles through ParticleDraw, both in world metres. Calls only collect
-// vertices; End() uploads them and draws, in three passes: shape fills, then outlines and joints, then
-// particles, so particles are never hidden behind the shapes they fly past. Everything is drawn by one
-// small shader: solid geometry as is, particles as soft round points (or soft lines along their
-// velocity for sparks) whose opacity is the sprite colour's alpha. Looks follow cfx::render::RenderStyle
-// so that the testbed and the Cairo pictures agree.
+// Render() turns the whole list into triangles in pixels and draws them in the list's order with one
+// small shader: the background gradient as a quad, shapes as fans (fills) and quads (outlines, their width
+// in pixels), soft points as quads whose opacity fades towards their rim (glows added onto what is below),
+// grains as fans inside fans of their rim, streaks as quads fading towards their tail with a soft round
+// head, added onto what is below as the Cairo renderer adds them, and the scale bar. Text (the overlay,
+// labels, the scale bar's length) is left to the testbed's panels.
 //
 // Lifetime: create and destroy with the OpenGL context current; one thread.
 #pragma once
 
-#include "contactfx/draw.h"
-#include "contactfx/render/cairo_renderer.h"
-#include "contactfx/render/camera.h"
+#include "contactfx/draw/draw_list.h"
 
-#include <box2d/b2_draw.h>
-#include <cstdint>
-#include <span>
+#include <cstddef>
 #include <vector>
 
 namespace cfx::testbed
 {
 
-class GlDraw final : public b2Draw, public ParticleDraw
+class GlRenderer final
 {
 public:
     /// Compiles the shader and creates the buffers. Throws std::runtime_error when OpenGL refuses.
-    explicit GlDraw(const render::RenderStyle& style);
-    ~GlDraw() override;
-    GlDraw(const GlDraw&) = delete;
-    GlDraw& operator=(const GlDraw&) = delete;
+    GlRenderer();
+    ~GlRenderer();
+    GlRenderer(const GlRenderer&) = delete;
+    GlRenderer& operator=(const GlRenderer&) = delete;
 
-    /// Starts collecting a frame seen through `camera` (its width and height: the viewport's, px).
-    void Begin(const render::Camera& camera);
-    /// Draws what was collected into the current viewport.
-    void End();
-
-    void DrawPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
-    void DrawSolidPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
-    void DrawCircle(const b2Vec2& center, float radius, const b2Color& color) override;
-    void DrawSolidCircle(const b2Vec2& center, float radius, const b2Vec2& axis,
-                         const b2Color& color) override;
-    void DrawSegment(const b2Vec2& p1, const b2Vec2& p2, const b2Color& color) override;
-    void DrawTransform(const b2Transform& xf) override;
-    /// `size` in pixels, as in Box2D's testbed.
-    void DrawPoint(const b2Vec2& p, float size, const b2Color& color) override;
-
-    /// Soft round points of the sprite's size (at least style.minSpriteSize px); sprites with
-    /// streak > 0 as soft lines from position - velocity * streak to position.
-    void DrawParticles(std::span<const ParticleSprite> sprites) override;
+    /// Draws the shapes and sprites of `list` into the current viewport, whose size in pixels must be the
+    /// list's camera's, starting with the list's background gradient.
+    void Render(const DrawList& list);
 
 private:
     struct Vertex
     {
-        float x, y;       // m, world
+        float x, y;       // px, y down
         float r, g, b, a; // straight alpha
-        float u, v;       // position inside a round sprite, [-1, 1]; (0, 0) for solid geometry
+        float u, v;       // position inside a soft sprite, [-1, 1]; (0, 0) for solid geometry
     };
     static_assert(sizeof(Vertex) == 32);
 
-    void Line(b2Vec2 a, b2Vec2 b, const b2Color& color);
-    void Disc(std::vector<Vertex>& out, b2Vec2 center, float radius, const Color& color);
-    void Streak(b2Vec2 tail, b2Vec2 head, float width, const Color& color);
-    void Upload(const std::vector<Vertex>& vertices, unsigned mode);
+    /// Consecutive vertices drawn with one blend mode.
+    struct Run
+    {
+        std::size_t first = 0;
+        std::size_t count = 0;
+        bool additive = false;
+    };
 
-    render::RenderStyle m_style;
-    render::Camera m_camera;
-    std::vector<Vertex> m_fills;     // triangles
-    std::vector<Vertex> m_lines;     // line pairs
-    std::vector<Vertex> m_particles; // triangles
+    void Shape(const DrawList& list, const ShapeCommand& shape);
+    void Sprite(const SpriteCommand& sprite);
+    void Triangle(const Vertex& a, const Vertex& b, const Vertex& c);
+    void Quad(const Vertex (&corners)[4]);
+    void Line(b2Vec2 from, b2Vec2 to, float width, const Color& color);
+    void Soft(b2Vec2 center, float radius, const Color& color);
+    void Disc(b2Vec2 center, float radius, const Color& color);
+    void Blend(bool additive);
+
+    std::vector<Vertex> m_vertices; // triangles
+    std::vector<Run> m_runs;
+    std::vector<b2Vec2> m_outline; // px, one shape's
     unsigned m_program = 0;
     unsigned m_vao = 0;
     unsigned m_vbo = 0;

@@ -25,10 +25,11 @@ struct PixelRect
     int height = 1;
 };
 
-/// The part of a `width` x `height` window that shows the world (at least one pixel).
-inline PixelRect WorldViewRect(int width, int height)
+/// The part of a `width` x `height` window that shows the world (at least one pixel): all of it when the
+/// panels are hidden (Tab).
+inline PixelRect WorldViewRect(int width, int height, bool panelsShown = true)
 {
-    return PixelRect{0, 0, std::max(1, width - kPanelWidth), std::max(1, height)};
+    return PixelRect{0, 0, std::max(1, width - (panelsShown ? kPanelWidth : 0)), std::max(1, height)};
 }
 
 } // namespace cfx::testbed

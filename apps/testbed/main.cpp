@@ -9,6 +9,7 @@
 #include "contactfx/error.h"
 #include "contactfx/version.h"
 #include "harness/scenes.h"
+#include "keys.h"
 #include "options.h"
 
 #include <CLI/CLI.hpp>
@@ -38,6 +39,10 @@ int main(int argc, char** argv)
                                          "interaction, drawing the last few, then exit");
     app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG");
     app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");
+    app.add_flag("--debug", options.debug,
+                 "Start with every debug layer on: contact points by intensity, normals, normal impulses, "
+                 "rule names, particle velocities");
+    app.footer("Keys (Box2D's testbed where it has them):\n" + cfx::testbed::KeysHelp());
     app.set_version_flag("--version", std::string("contactfx-testbed ") + cfx::kVersion,
                          "Print the version and exit");
     try

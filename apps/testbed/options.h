@@ -1,6 +1,7 @@
 // contactfx-testbed: the command line.
 //
 //   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]] [--hide-particles]
+//                     [--debug]
 //   contactfx-testbed --version        prints "contactfx-testbed VERSION" and exits 0 (main.cpp)
 //
 // Without --frames the testbed is interactive until its window closes. With --frames it runs N frames of
@@ -20,6 +21,7 @@ struct Options
     int frames = 0;                 ///< frames to run without interaction, >= 1; 0: interactive
     std::string screenshot;         ///< PNG of the last frame; needs frames
     bool hideParticles = false;     ///< draw the scene without its particles
+    bool debug = false;             ///< start with every debug layer on (DebugLayers::All)
 };
 
 /// Throws InputError (file "<command line>", the flag as path) for an unknown scene, frames < 1 when

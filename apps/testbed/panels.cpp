@@ -1,5 +1,7 @@
 #include "panels.h"
 
+#include "sound_panel.h"
+
 #include <imgui.h>
 
 namespace cfx::testbed
@@ -48,6 +50,10 @@ void DrawPanels(Session& session, PanelState& state, int windowWidth, int window
         if (ImGui::CollapsingHeader("Events", ImGuiTreeNodeFlags_DefaultOpen))
         {
             EventsPanel(session);
+        }
+        if (ImGui::CollapsingHeader("Sound"))
+        {
+            SoundPanel(session);
         }
         if (ImGui::CollapsingHeader("Effects"))
         {

@@ -8,7 +8,9 @@
 #pragma once
 
 #include "contactfx/config.h"
+#include "contactfx/draw/debug_layers.h"
 #include "effects_editor.h"
+#include "keys.h"
 #include "session.h"
 
 #include <array>
@@ -24,6 +26,9 @@ struct DrawToggles
     bool shapes = true;
     bool joints = true;
     bool particles = true;
+    bool events = true; ///< a fading ring where each recent event happened
+    bool scaleBar = true;
+    DebugLayers debug; ///< contact points, normals, impulses, rule names, particle velocities
 };
 
 /// Recent step times, for averages that do not flicker.
@@ -40,9 +45,6 @@ private:
     std::size_t m_next = 0;
     std::size_t m_count = 0;
 };
-
-/// Restarts the scene; a failure (its file went bad meanwhile) goes to `error`.
-void RestartScene(Session& session, std::string& error);
 
 /// Scene list, controls and draw toggles. Errors of opening a scene go to `error`.
 void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error);
@@ -64,6 +66,7 @@ struct PanelState
     EffectsEditor editor;
     std::string sceneError;
     float frameMs = 0.0f;
+    bool hidden = false; ///< Tab: the world view takes the whole window
 };
 void DrawPanels(Session& session, PanelState& state, int windowWidth, int windowHeight, int width);
 

@@ -5,19 +5,6 @@
 namespace cfx::testbed
 {
 
-void RestartScene(Session& session, std::string& error)
-{
-    try
-    {
-        session.Restart();
-        error.clear();
-    }
-    catch (const InputError& problem)
-    {
-        error = problem.what();
-    }
-}
-
 void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
 {
     for (const SceneEntry& entry : Scenes())
@@ -68,16 +55,41 @@ void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
         {
             session.ToggleFourWheelDrive();
         }
-        ImGui::TextUnformatted(session.Manual() ? "Driving: keys a / d, s brakes"
-                                                : "Driving: the scene's script (a, s, d take over)");
+        ImGui::TextWrapped("%s", session.Manual() ? "Driving: keys a / d, s brakes"
+                                                  : "Driving: the scene's script (a, s, d take over)");
     }
     ImGui::Checkbox("Shapes", &toggles.shapes);
     ImGui::SameLine();
     ImGui::Checkbox("Joints", &toggles.joints);
     ImGui::SameLine();
     ImGui::Checkbox("Particles", &toggles.particles);
-    ImGui::TextDisabled("Left drag: move bodies. Right drag, arrows: pan.");
-    ImGui::TextDisabled("Wheel, z / x: zoom. Home: reset the view.");
+    ImGui::Checkbox("Events", &toggles.events);
+    ImGui::SameLine();
+    ImGui::Checkbox("Scale bar", &toggles.scaleBar);
+    if (ImGui::TreeNode("Debug drawing"))
+    {
+        DebugLayers& debug = toggles.debug;
+        ImGui::Checkbox("Contact points by intensity", &debug.manifoldPoints);
+        ImGui::TextWrapped("Blue: 0, green: the rule's threshold, red: twice it; a white ring: above it.");
+        ImGui::Checkbox("Normals", &debug.normals);
+        ImGui::SameLine();
+        ImGui::Checkbox("Normal impulses", &debug.impulses);
+        ImGui::Checkbox("Rule names", &debug.ruleNames);
+        ImGui::SameLine();
+        ImGui::Checkbox("Particle velocities", &debug.velocities);
+        ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("Keys"))
+    {
+        for (const KeyBinding& binding : KeyBindings())
+        {
+            if (binding.name != nullptr)
+            {
+                ImGui::TextWrapped("%-9s %s", binding.name, binding.meaning);
+            }
+        }
+        ImGui::TreePop();
+    }
 }
 
 } // namespace cfx::testbed

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <box2d/b2_body.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_fixture.h>
+#include <box2d/b2_world.h>
 
 namespace cfx::testbed
 {
@@ -31,8 +34,8 @@ void Session::Open(const SceneEntry& entry, const std::optional<EffectsConfig>& 
     m_followLift = 0.0f;
     if (followCar)
     {
-        render::Camera start; // where Follow puts the centre with no lift
-        render::Follow(start, *m_simulation->GetCar()->Body());
+        cfx::Camera start; // where Follow puts the centre with no lift
+        Follow(start, *m_simulation->GetCar()->Body());
         m_followLift = entry.view.center.y - start.center.y;
     }
     stepOnce = false;
@@ -42,6 +45,41 @@ void Session::Open(const SceneEntry& entry, const std::optional<EffectsConfig>& 
 void Session::Restart()
 {
     Open(*m_entry, m_simulation->GetEffects().Config());
+}
+
+void Session::OpenNeighbour(int step)
+{
+    const std::span<const SceneEntry> scenes = Scenes();
+    const auto count = static_cast<long>(scenes.size());
+    const long current = m_entry - scenes.data();
+    const long next = ((current + step) % count + count) % count;
+    Open(scenes[static_cast<std::size_t>(next)]);
+}
+
+void Session::Launch()
+{
+    constexpr float kRadius = 0.25f;    // m
+    constexpr float kDensity = 8.0f;    // kg/m^2
+    constexpr float kFlightTime = 0.6f; // s to cover the distance at launch speed
+    const b2Vec2 from = m_camera.ToWorld(
+        b2Vec2(0.1f * static_cast<float>(m_camera.width), 0.1f * static_cast<float>(m_camera.height)));
+    const b2Vec2 to = m_camera.ToWorld(
+        b2Vec2(0.5f * static_cast<float>(m_camera.width), static_cast<float>(m_camera.height)));
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.bullet = true;
+    def.position = from;
+    def.linearVelocity = (1.0f / kFlightTime) * (to - from);
+    b2Body* ball = m_simulation->GetScene().world->CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = kRadius;
+    b2FixtureDef fixture;
+    fixture.shape = &circle;
+    fixture.density = kDensity;
+    fixture.friction = 0.6f;
+    fixture.restitution = 0.2f;
+    Effects& effects = m_simulation->GetEffects();
+    effects.SetMaterial(ball->CreateFixture(&fixture), effects.FindMaterial("steel"));
 }
 
 void Session::ApplyConfig(const EffectsConfig& config)
@@ -65,7 +103,7 @@ void Session::Advance()
     m_events.Record(m_simulation->GetEffects(), m_simulation->Time());
     if (followCar && m_simulation->GetCar())
     {
-        render::Follow(m_camera, *m_simulation->GetCar()->Body(), m_followLift);
+        Follow(m_camera, *m_simulation->GetCar()->Body(), m_followLift);
     }
 }
 
@@ -85,10 +123,10 @@ void Session::ResetView(int width, int height)
 {
     const SceneView& view = m_entry->view;
     const float aspect = static_cast<float>(std::max(width, 1)) / static_cast<float>(std::max(height, 1));
-    m_camera = render::MakeCamera(std::max(width, 1), std::max(height, 1), view.height * aspect, view.center);
+    m_camera = MakeCamera(std::max(width, 1), std::max(height, 1), view.height * aspect, view.center);
     if (followCar && m_simulation->GetCar())
     {
-        render::Follow(m_camera, *m_simulation->GetCar()->Body(), m_followLift);
+        Follow(m_camera, *m_simulation->GetCar()->Body(), m_followLift);
     }
 }
 

@@ -7,7 +7,7 @@
 // frame rate (the screenshot mode's determinism).
 #pragma once
 
-#include "contactfx/render/camera.h"
+#include "contactfx/draw/camera.h"
 #include "event_log.h"
 #include "harness/scenes.h"
 #include "mouse_drag.h"
@@ -32,6 +32,12 @@ public:
     void Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config = std::nullopt);
     /// Opens the current scene again from its file, with the effects configuration in force.
     void Restart();
+    /// Opens the registered scene `step` places after the current one in Scenes() order (negative:
+    /// before), wrapping around, with its own effects. Throws InputError and keeps the scene on bad input.
+    void OpenNeighbour(int step);
+    /// Launches a steel ball (material "steel" when the effects have it) from the top left of the view
+    /// towards the middle of its bottom edge, fast enough to strike sparks.
+    void Launch();
     /// Replaces the effects configuration, keeping the world (Simulation::ReplaceEffects).
     void ApplyConfig(const EffectsConfig& config);
 
@@ -58,7 +64,7 @@ public:
     Simulation& Sim() { return *m_simulation; }
     const Simulation& Sim() const { return *m_simulation; }
     const SceneEntry& Entry() const { return *m_entry; }
-    const render::Camera& Camera() const { return m_camera; }
+    const cfx::Camera& Camera() const { return m_camera; }
     /// Effect events of the recent steps (cleared when a simulation is opened).
     const EventLog& Events() const { return m_events; }
     /// Changes each time a simulation is opened (another scene, a restart).
@@ -72,13 +78,13 @@ private:
     std::filesystem::path m_scenesDir;
     const SceneEntry* m_entry = nullptr;
     std::unique_ptr<Simulation> m_simulation;
-    render::Camera m_camera;
+    cfx::Camera m_camera;
     MouseDrag m_drag;
     EventLog m_events;
     DriveInput m_input;
     bool m_manual = false;
     std::uint64_t m_generation = 0;
-    float m_followLift = 0.0f; // m: the scene's view centre above where render::Follow centres at the start
+    float m_followLift = 0.0f; // m: the scene's view centre above where Follow centres at the start
 };
 
 } // namespace cfx::testbed

@@ -89,13 +89,18 @@ namespace cfx::testbed
 void EventsPanel(const Session& session)
 {
     const std::deque<LoggedEvent>& entries = session.Events().Entries();
-    ImGui::TextDisabled("scrapes and impacts as they happen; rings mark the last half second");
+    // Wrapped, never cut off at the panel's edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("scrapes and impacts as they happen; rings mark the last half second");
+    ImGui::PopStyleColor();
     ImGui::BeginChild("events", ImVec2(0.0f, 160.0f), true);
     for (auto it = entries.rbegin(); it != entries.rend(); ++it)
     {
         const bool impact = it->event.type == EffectEventType::impact;
-        ImGui::TextColored(impact ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.8f, 0.85f, 0.9f, 1.0f), "%s",
-                           it->text.c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              impact ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.8f, 0.85f, 0.9f, 1.0f));
+        ImGui::TextWrapped("%s", it->text.c_str());
+        ImGui::PopStyleColor();
     }
     ImGui::EndChild();
 }

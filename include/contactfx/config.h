@@ -1,7 +1,7 @@
 // contactfx: an effects configuration is plain data.
 //
-// Materials, particle types, pair rules, the particle budget and material assignment rules, all by name, with
-// defaults in place. The same struct is built in code, read from an effects config JSON file
+// Materials, particle types, pair rules, the particle budget, material assignment rules and sound, all by
+// name, with defaults in place. The same struct is built in code, read from an effects config JSON file
 // (contactfx_scene), edited in the testbed and written back. Validate() lists every problem with the field
 // path, e.g. `rules[2].threshold`; Effects refuses an invalid configuration with the same list.
 #pragma once
@@ -10,6 +10,7 @@
 #include "contactfx/error.h"
 #include "contactfx/particle_types.h"
 #include "contactfx/rules.h"
+#include "contactfx/sound_config.h"
 
 #include <cstdint>
 #include <string>
@@ -35,6 +36,9 @@ struct ParticleBudget
     /// with no more touching at once, neither the contact callbacks nor Effects::Step allocate. More
     /// allocate once, as they first happen.
     std::uint32_t contacts = 1024;
+    /// Particle hit groups (per particle type and body) a step reports at most, 0 .. 4096: beyond it the
+    /// groups with the most hits are kept (ties: the first to appear). 0 records no hits at all.
+    std::uint32_t particleHits = 64;
 
     bool operator==(const ParticleBudget&) const = default;
 };
@@ -49,6 +53,8 @@ struct EffectsConfig
     ParticleBudget budget;
     /// Materials for fixtures without a `material` property, first match wins (assignments.h).
     std::vector<MaterialAssignment> assignments;
+    /// How events become voices and how the built-in synthesizer sounds (sound_config.h, docs/sound.md).
+    SoundConfig sound;
 
     bool operator==(const EffectsConfig&) const = default;
 

@@ -1,10 +1,10 @@
 // contactfx: every field of an effects configuration, declared once.
 //
-// The config structs (particle_types.h, rules.h, intensity.h, assignments.h, config.h) stay plain structs
-// that users fill in code. Beside them, one table per struct lists its fields: name (the member's name,
-// which is also the JSON key and the last part of a diagnostic's path), a pointer to the member, unit,
-// range, a one-line description and, for enums, the names of their values. Defaults are not repeated
-// here: a field's default is its value in a default-constructed struct.
+// The config structs (particle_types.h, rules.h, intensity.h, assignments.h, sound_config.h, config.h) stay
+// plain structs that users fill in code. Beside them, one table per struct lists its fields: name (the
+// member's name, which is also the JSON key and the last part of a diagnostic's path), a pointer to the
+// member, unit, range, a one-line description and, for enums, the names of their values. Defaults are not
+// repeated here: a field's default is its value in a default-constructed struct.
 //
 // The table is plain data in the spirit of Dear ImGui's style-variable table and Jolt's settings: no
 // macros, no reflection library. What reads it:
@@ -90,5 +90,8 @@ std::span<const Field<RuleDef>> RuleFields();
 std::span<const Field<IntensityModel>> IntensityFields();
 std::span<const Field<MaterialAssignment>> AssignmentFields();
 std::span<const Field<ParticleBudget>> BudgetFields();
+/// The `sound` section's own fields (its `rules` list is checked as a list) and those of one sound rule.
+std::span<const Field<SoundConfig>> SoundFields();
+std::span<const Field<SoundRuleDef>> SoundRuleFields();
 
 } // namespace cfx

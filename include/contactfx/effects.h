@@ -34,7 +34,6 @@
 #include <memory>
 #include <span>
 #include <string_view>
-#include <vector>
 
 class b2World;
 class b2Body;
@@ -96,7 +95,7 @@ public:
 
     const EffectsStats& Stats() const { return m_stats; }
     /// The scrape and impact events of the last Step, in order (events.h). Valid until the next Step.
-    std::span<const EffectEvent> Events() const { return m_events; }
+    std::span<const EffectEvent> Events() const;
     ParticleView Particles() const { return m_particles.View(); }
     const EffectsConfig& Config() const { return m_config; }
     const RuleTable& Rules() const { return m_rules; }
@@ -104,7 +103,7 @@ public:
 
 private:
     friend struct detail::EffectsAccess; // the library's own tests and tools (src/effects_access.h)
-    struct Internals;                    // materials table, contact tracker, listeners, emitter
+    struct Internals; // materials table, contact tracker, listeners, emitter, event tracker
 
     b2World& m_world;
     EffectsConfig m_config;
@@ -112,7 +111,6 @@ private:
     ParticleSystem m_particles;
     std::unique_ptr<Internals> m_internals;
     EffectsStats m_stats;
-    std::vector<EffectEvent> m_events;
     EffectEventListener* m_eventListener = nullptr;
 };
 

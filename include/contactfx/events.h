@@ -7,11 +7,15 @@
 // contact ended, a body fell asleep, intensity at or below the threshold for the rule's scrapeEndDelay,
 // the last fixture or body destroyed), so a looping sound that follows its id always stops. An impact is
 // a first touch whose approach speed along the normal, taken before the solver removes it, reaches the
-// rule's impactThreshold; a body pair reports at most one per step (its fastest new contact).
+// rule's impactThreshold; a body pair reports at most one per step (its fastest new contact). Particle hits
+// are the step's pool particles that hit a body, one event per particle type and body (dirt pattering on
+// the ground, sparks ticking on steel): ParticleSystem::Hits as events, with no rule.
 //
 // Order within a step, the same for the same inputs: first the scrapes that ended inside Box2D's
 // callbacks since the last step (in callback order), then rule by rule, body pair by body pair in the
-// order of each pair's first contact in tracking order: the pair's impact, then its scrape event.
+// order of each pair's first contact in tracking order: the pair's impact, then its scrape event; last, after
+// the particle step, the particle hits, one per group of ParticleSystem::Hits in its order (the order the
+// groups first appear among the particles, oldest particle first; at most budget.particleHits).
 #pragma once
 
 #include "contactfx/materials.h"
@@ -19,6 +23,7 @@
 #include <box2d/b2_math.h>
 #include <cstdint>
 
+class b2Body;
 class b2Fixture;
 
 namespace cfx
@@ -30,6 +35,7 @@ enum class EffectEventType : std::uint8_t
     scrapeChanged,
     scrapeEnded,
     impact,
+    particleHits, ///< pool particles of one type that hit one body in the step
 };
 
 /// Why a scrape ended.
@@ -42,7 +48,8 @@ enum class ScrapeEnd : std::uint8_t
     destroyed,      ///< a fixture or body was destroyed
 };
 
-/// One event. Fields that do not apply to a type are zero.
+/// One event. Fields that do not apply to a type are zero (invalid ids for a particle hit's rule and
+/// materials).
 struct EffectEvent
 {
     EffectEventType type = EffectEventType::scrapeBegan;
@@ -56,17 +63,24 @@ struct EffectEvent
     const b2Fixture* fixtureA = nullptr;
     const b2Fixture* fixtureB = nullptr;
     /// Scrape events: the scrape's id, the same from began to ended, never reused. Impacts: an id of
-    /// their own from the same counter.
+    /// their own from the same counter. Particle hits: 0.
     std::uint32_t id = 0;
     std::uint64_t step = 0; ///< Effects step counter when the event was made (first step: 0)
     /// m, world: the body pair's manifold point with the highest intensity (scrapes; where it was last
-    /// reported for an ended scrape) or approach speed (impacts)
+    /// reported for an ended scrape) or approach speed (impacts); particle hits: the mean of the points
+    /// where the particles touched the body
     b2Vec2 point{0.0f, 0.0f};
     b2Vec2 normal{0.0f, 0.0f};    ///< unit, from fixtureA's side toward fixtureB's
     float intensity = 0.0f;       ///< scrapes: the body pair's intensity this step (what drives emission)
     float tangentialSpeed = 0.0f; ///< m/s, scrapes: sliding speed at that point
     float normalImpulse = 0.0f;   ///< N*s: sum of the body pair's PostSolve normal impulses this step
-    float approachSpeed = 0.0f;   ///< m/s, impacts: approach speed along the normal before the solver
+    /// m/s, impacts: approach speed along the normal before the solver; particle hits: the particles' mean
+    float approachSpeed = 0.0f;
+    /// Particle hits: the body hit. Valid during the step that reported it; afterwards compare it, never
+    /// dereference it (it may have been destroyed).
+    const b2Body* body = nullptr;
+    ParticleTypeId particleType; ///< particle hits: the particles' type
+    std::uint32_t count = 0;     ///< particle hits: how many particles hit (>= 1)
 };
 
 /// Receives every event of a step, in order, at the end of Effects::Step. It may read the world but

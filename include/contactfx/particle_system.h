@@ -22,8 +22,9 @@
 // their position and velocity are read back each step. An application that destroys such a body itself
 // tells the system with ForgetBody (Effects does it for its own system through its destruction
 // listener): the particle goes, and the system never destroys that body again. Large pools are split across
-// threads; the result does not depend on the number of threads, bit for bit. No allocation per step once
-// warmed up.
+// threads; the result does not depend on the number of threads, bit for bit. Each step also reports the pool
+// particles that hit something, per particle type and body hit (Hits; docs/particles.md). No allocation per
+// step once warmed up.
 //
 // Lifetime: the world must outlive the system. Threading: Step, Spawn and the destructor must not run
 // while the world steps; the system's own helper threads only run inside Step.
@@ -80,6 +81,20 @@ struct ParticleView
     }
 };
 
+/// The pool particles of one type that hit one body in one step (ParticleSystem::Hits): dirt pattering on
+/// the ground, sparks ticking on steel. A particle's hit is its hardest touch of the step, counted when it
+/// approached the surface at least at its type's hitSpeed.
+struct ParticleHitGroup
+{
+    ParticleTypeId type;
+    /// The body hit. Valid during the step that reported it; afterwards compare it, never dereference it
+    /// (the application may have destroyed the body).
+    const b2Body* body = nullptr;
+    std::uint32_t count = 0;   ///< particles that hit it, >= 1
+    float meanSpeed = 0.0f;    ///< m/s, mean approach speed of the hits
+    b2Vec2 centre{0.0f, 0.0f}; ///< m, world: mean of the points where the particles touched the surface
+};
+
 /// How a particle system uses the machine.
 struct ParticleSystemOptions
 {
@@ -115,6 +130,8 @@ struct ParticleCounters
     /// Body steps in which a body was left out of particle collision because its position, rotation,
     /// centre or velocities were not finite, or beyond 1e7 (m, m/s, rad/s).
     std::uint64_t skippedBodies = 0;
+    /// Particle hit groups left out of Hits() because a step had more than ParticleBudget::particleHits.
+    std::uint64_t droppedHitGroups = 0;
 };
 
 class ParticleSystem final
@@ -153,6 +170,12 @@ public:
     /// Whether `body` is the Box2D body of one of this system's body-backed particles (spawn point
     /// tests and the static geometry cache ignore those; an application's own queries may too).
     bool IsParticleBody(const b2Body* body) const;
+
+    /// The last Step's particle hits, one group per (particle type, body) in the order the groups first
+    /// appear in spawn order (oldest particle first); at most ParticleBudget::particleHits, the groups with
+    /// the most hits kept (ties: the first to appear). Only pool particles that collide hit; none when
+    /// particleHits is 0. The same for any number of threads. Valid until the next Step.
+    std::span<const ParticleHitGroup> Hits() const;
 
     /// Threads the last step used (1 when it was not split).
     unsigned ThreadsUsed() const { return m_threadsUsed; }

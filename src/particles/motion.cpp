@@ -108,13 +108,34 @@ enum class StaticPart : std::uint8_t
     clear,   ///< its clearance covers the step: it flies freely (the sweep would give the same bits)
 };
 
+// The hardest touch of a particle's step so far.
+struct Hardest
+{
+    float speed = 0.0f; ///< approach speed (m/s); 0: no touch approached the surface
+    b2Vec2 point{0.0f, 0.0f};
+    const b2Body* body = nullptr;
+};
+
+// Keeps `hit` in `hardest` when the particle, at `velocity` before the hit's response, approaches the
+// surface faster than at any earlier touch of the step.
+void KeepHarder(const SweepResult& hit, b2Vec2 velocity, float radius, Hardest& hardest)
+{
+    const float speed = -b2Dot(velocity - hit.surfaceVelocity, hit.touch.normal);
+    if (speed > hardest.speed)
+    {
+        hardest.speed = speed;
+        hardest.point = hit.touch.position - radius * hit.touch.normal;
+        hardest.body = hit.material->body;
+    }
+}
+
 // Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `part`: what
 // its mark says; `mark`: that mark, what is left of its clearance after this step's flight. Returns its
 // clearance after the step (see PoolArrays): kResting at a fixed point of the static sweep,
 // kUnknownClearance after a touch. `crushed`: set when a moving body squeezed it against other geometry
-// with no free place (see Push).
+// with no free place (see Push). `hardest`: its hardest touch of the step.
 float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, StaticPart part, float mark,
-              b2Vec2& position, b2Vec2& velocity, bool& crushed)
+              b2Vec2& position, b2Vec2& velocity, bool& crushed, Hardest& hardest)
 {
     const b2Vec2 start = position;
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
@@ -151,6 +172,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             }
             touched = true;
             position = hit.touch.position;
+            KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             remaining *= 1.0f - hit.touch.t;
@@ -176,6 +198,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 position = free;
                 crushed = !Push(geometry, type.side, hit.firstTouch, position);
             }
+            KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             fixedPoint = false;
@@ -195,9 +218,11 @@ struct Listed
 
 // Pass 2: sweeps the listed particles through the geometry, in place, and measures their clearance.
 // Pass 1 left in each slot the particle's velocity after gravity and drag and what remains of its
-// clearance (kResting when it rests).
+// clearance (kResting when it rests). With `hits`, appends the hit of each swept particle whose hardest
+// touch reached its type's hitSpeed (not of one that died in the step).
 void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeometry& geometry, float dt,
-                 const StepTrust& trust, const Listed& listed, std::uint32_t count, StepCounts& counts)
+                 const StepTrust& trust, const Listed& listed, std::uint32_t count, StepCounts& counts,
+                 HitSink* hits)
 {
     // A particle trusted to rest stays where it started, at rest. Whether a listed particle rests is as
     // good as random, so they are put back without a branch and only the others are swept on (all of
@@ -237,7 +262,8 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         b2Vec2 position(listed.startX[k], listed.startY[k]);
         b2Vec2 velocity(pool.velocityX[slot], pool.velocityY[slot]);
         bool crushed = false;
-        const float clearance = Collide(type, geometry, dt, part, mark, position, velocity, crushed);
+        Hardest hardest;
+        const float clearance = Collide(type, geometry, dt, part, mark, position, velocity, crushed, hardest);
         if (!Sane(position) || !Sane(velocity))
         {
             // A surface's numbers threw it out of the world (a restitution of 1e30): it dies where it
@@ -247,6 +273,11 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
             pool.life[slot] = 0.0f;
             velocity.SetZero();
             ++counts.nonFinite;
+        }
+        else if (hits != nullptr && !crushed && hardest.speed >= type.hitSpeed && hardest.speed > 0.0f)
+        {
+            hits->hits[hits->count++] =
+                ParticleHit{hardest.body, hardest.speed, hardest.point.x, hardest.point.y, pool.type[slot]};
         }
         if (crushed)
         {
@@ -361,7 +392,7 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
 template <bool kCollide, bool kMoving, bool kDistrust>
 std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const WorldGeometry* geometry,
                       float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                      std::vector<b2Body*>& dead, StepCounts& counts)
+                      std::vector<b2Body*>& dead, StepCounts& counts, HitSink* hits)
 {
     // A local copy: the stores below cannot alias it, so its pointers stay in registers.
     const PoolArrays pool = arrays;
@@ -378,7 +409,7 @@ std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const Wor
                                                        listed, listedCount, dead, counts);
         if constexpr (kCollide)
         {
-            SweepListed(pool, types, *geometry, dt, trust, listed, listedCount, counts);
+            SweepListed(pool, types, *geometry, dt, trust, listed, listedCount, counts, hits);
         }
     }
     return kept;
@@ -388,21 +419,22 @@ std::uint32_t Advance(const PoolArrays& arrays, const TypeStep* types, const Wor
 
 std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
                            float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                           std::vector<b2Body*>& dead, StepCounts& counts)
+                           std::vector<b2Body*>& dead, StepCounts& counts, HitSink* hits)
 {
     if (geometry == nullptr)
     {
-        return Advance<false, false, false>(pool, types, nullptr, dt, trust, begin, end, dead, counts);
+        return Advance<false, false, false>(pool, types, nullptr, dt, trust, begin, end, dead, counts,
+                                            nullptr);
     }
     if (!trust.clearance)
     {
-        return Advance<true, false, true>(pool, types, geometry, dt, trust, begin, end, dead, counts);
+        return Advance<true, false, true>(pool, types, geometry, dt, trust, begin, end, dead, counts, hits);
     }
     if (geometry->HasMoving())
     {
-        return Advance<true, true, false>(pool, types, geometry, dt, trust, begin, end, dead, counts);
+        return Advance<true, true, false>(pool, types, geometry, dt, trust, begin, end, dead, counts, hits);
     }
-    return Advance<true, false, false>(pool, types, geometry, dt, trust, begin, end, dead, counts);
+    return Advance<true, false, false>(pool, types, geometry, dt, trust, begin, end, dead, counts, hits);
 }
 
 void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count)

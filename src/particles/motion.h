@@ -59,8 +59,28 @@ struct TypeStep
     b2Vec2 restVelocity; ///< what gravity and drag make of a zero velocity: (0 + gravityDelta) * damping
     float lifeLoss;      ///< life lost this step
     ParticleSide side;
+    /// The least approach speed (m/s) of a touch recorded as a ParticleHit.
+    float hitSpeed;
     bool bodyBacked;
     bool sweeps; ///< a pool particle that collides: moved through the geometry here
+};
+
+/// A pool particle's hardest touch of a step (static or moving), recorded when its approach speed reaches
+/// its type's hitSpeed. 24 bytes.
+struct ParticleHit
+{
+    const b2Body* body; ///< the body of the fixture it touched; valid during the step
+    float speed;        ///< approach speed (m/s, > 0): -dot(velocity - surface velocity, normal) before it
+    float x, y;         ///< where (m, world) the disc touched the surface
+    std::uint16_t type; ///< the particle's type
+};
+
+/// Where a run records its hits: `hits[0, count)`, room for one per particle of the run (a particle has
+/// at most one hit a step).
+struct HitSink
+{
+    ParticleHit* hits;
+    std::uint32_t count;
 };
 
 /// What the marks a step left still say in this step.
@@ -85,10 +105,11 @@ struct StepCounts
 /// it is not null. A particle whose clearance covers its motion flies freely, which is the same bits as
 /// sweeping it. Returns how many live; they are now at [begin, begin + kept) in order. Bodies of
 /// body-backed particles that died are appended to `dead` (which must have room: no allocation) for the
-/// caller to destroy on its thread. Adds what it counts to `counts`.
+/// caller to destroy on its thread. Adds what it counts to `counts`. With `hits` (not null), appends the
+/// hits of the particles that collide, in particle order (null: nothing is recorded, at no cost).
 std::uint32_t AdvanceRange(const PoolArrays& pool, const TypeStep* types, const WorldGeometry* geometry,
                            float dt, const StepTrust& trust, std::uint32_t begin, std::uint32_t end,
-                           std::vector<b2Body*>& dead, StepCounts& counts);
+                           std::vector<b2Body*>& dead, StepCounts& counts, HitSink* hits);
 
 /// Moves `count` particles from logical index `from` to `to` (to < from), keeping their order.
 void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to, std::uint32_t count);

@@ -1,6 +1,6 @@
 #include "particles/particle_check.h"
 
-#include "spawn.h"
+#include "spawn_point.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>

@@ -1,7 +1,7 @@
 // contactfx internal: the static cache and the per-step walk of the world (see world_geometry.h).
 #include "particles/world_geometry.h"
 
-#include "spawn.h"
+#include "spawn_point.h"
 
 #include <algorithm>
 #include <bit>
@@ -13,7 +13,6 @@
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <unordered_map>
 
@@ -30,6 +29,15 @@ std::uint64_t Word(b2Vec2 value)
 {
     return (static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value.x)) << 32u) |
            std::bit_cast<std::uint32_t>(value.y);
+}
+
+// Whether a particle bounces off two materials alike: friction, restitution and threshold, bit for bit.
+// Not the body: the same fixture duplicated on another body is still met once (its hits name the first).
+bool SameResponse(const SurfaceMaterial& x, const SurfaceMaterial& y)
+{
+    return std::bit_cast<std::uint32_t>(x.friction) == std::bit_cast<std::uint32_t>(y.friction) &&
+           std::bit_cast<std::uint32_t>(x.restitution) == std::bit_cast<std::uint32_t>(y.restitution) &&
+           std::bit_cast<std::uint32_t>(x.restSpeed) == std::bit_cast<std::uint32_t>(y.restSpeed);
 }
 
 // FNV-1a over 64-bit words.
@@ -113,8 +121,8 @@ constexpr float kClearanceSlop = 1.0e-3f;
 
 SurfaceMaterial MaterialOf(const b2Fixture& fixture)
 {
-    return SurfaceMaterial{fixture.GetFriction(), fixture.GetRestitution(),
-                           fixture.GetRestitutionThreshold()};
+    return SurfaceMaterial{fixture.GetFriction(), fixture.GetRestitution(), fixture.GetRestitutionThreshold(),
+                           fixture.GetBody()};
 }
 
 // A box grown by `by` (m) on every side.
@@ -427,7 +435,7 @@ void WorldGeometry::DropDuplicatePrimitives()
                      x.categoryBits == y.categoryBits && x.maskBits == y.maskBits && Word(x.a) == Word(y.a) &&
                      Word(x.b) == Word(y.b) && Word(x.normal) == Word(y.normal) &&
                      std::bit_cast<std::uint32_t>(x.scalar) == std::bit_cast<std::uint32_t>(y.scalar) &&
-                     std::memcmp(&mx, &my, sizeof mx) == 0;
+                     SameResponse(mx, my);
         for (std::uint32_t i = 0; equal && x.kind == Kind::polygon && i < x.count; ++i)
         {
             equal = Word(m_polygonVertices[x.first + i]) == Word(m_polygonVertices[y.first + i]);

@@ -51,6 +51,8 @@ struct SurfaceMaterial
     float friction = 0.0f;
     float restitution = 0.0f;
     float restSpeed = 0.0f; ///< the fixture's restitution threshold (m/s)
+    /// The fixture's body, to name what a particle hit (ParticleHit); compared, never ordered by address.
+    const b2Body* body = nullptr;
 };
 
 /// A particle type's side of a touch.

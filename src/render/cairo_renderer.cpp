@@ -1,10 +1,10 @@
-// The Cairo renderer. Shapes are built in world coordinates (Cairo's matrix maps metres to pixels), then
-// stroked with the identity matrix so outlines keep their width in pixels whatever the zoom. Particles
-// are placed in pixels directly: a radial gradient for a soft point, a round-capped line added onto the
-// image for a spark's streak.
+// The Cairo backend of the draw list. Shapes are built in world coordinates (Cairo's matrix maps metres
+// to pixels), then stroked with the identity matrix so outlines keep their width in pixels whatever the
+// zoom. Sprites are in pixels already: a radial gradient for a soft point (added onto the image for a
+// glow), a round-capped line added onto the image for a streak, a filled disc inside its rim for a grain.
 #include "contactfx/render/cairo_renderer.h"
 
-#include "png_bytes.h"
+#include "contactfx/render/png.h"
 
 #include <algorithm>
 #include <cairo.h>
@@ -28,10 +28,17 @@ float Clamp01(float value)
     return std::clamp(value, 0.0f, 1.0f);
 }
 
+void SetWorldTransform(cairo_t* cr, const Camera& camera)
+{
+    cairo_identity_matrix(cr);
+    cairo_translate(cr, 0.5 * camera.width, 0.5 * camera.height);
+    cairo_scale(cr, camera.pixelsPerMetre, -camera.pixelsPerMetre);
+    cairo_translate(cr, -camera.center.x, -camera.center.y);
+}
+
 } // namespace
 
-CairoRenderer::CairoRenderer(int width, int height, const RenderStyle& style)
-    : m_width(width), m_height(height), m_style(style)
+CairoRenderer::CairoRenderer(int width, int height) : m_width(width), m_height(height)
 {
     if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide)
     {
@@ -48,9 +55,6 @@ CairoRenderer::CairoRenderer(int width, int height, const RenderStyle& style)
         throw std::runtime_error("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
                                  " image: " + reason);
     }
-    m_camera.width = width;
-    m_camera.height = height;
-    SetFlags(e_shapeBit);
 }
 
 CairoRenderer::~CairoRenderer()
@@ -59,203 +63,209 @@ CairoRenderer::~CairoRenderer()
     cairo_surface_destroy(m_surface);
 }
 
-void CairoRenderer::Begin(const Camera& camera)
+void CairoRenderer::Render(const DrawList& list)
 {
-    m_camera = camera;
+    Clear(list.background, list.backgroundBottom);
+    const std::size_t under = std::min(list.shapesUnderSprites, list.shapes.size());
+    for (std::size_t i = 0; i < under; ++i)
+    {
+        Shape(list, list.shapes[i]);
+    }
+    cairo_identity_matrix(m_cr);
+    for (const SpriteCommand& sprite : list.sprites)
+    {
+        Sprite(sprite);
+    }
+    for (std::size_t i = under; i < list.shapes.size(); ++i)
+    {
+        Shape(list, list.shapes[i]);
+    }
+    cairo_identity_matrix(m_cr);
+    const double textSize =
+        list.overlay.textSize > 0.0f ? list.overlay.textSize : std::max(9.0, 0.026 * m_height);
+    cairo_select_font_face(m_cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(m_cr, 0.8 * textSize);
+    for (const TextLabel& label : list.labels)
+    {
+        cairo_set_source_rgba(m_cr, 0.0, 0.0, 0.0, 0.7); // a shadow, so it reads on any colour
+        cairo_move_to(m_cr, label.at.x + 1.0, label.at.y + 1.0);
+        cairo_show_text(m_cr, label.text.c_str());
+        cairo_set_source_rgba(m_cr, label.color.r, label.color.g, label.color.b, label.color.a);
+        cairo_move_to(m_cr, label.at.x, label.at.y);
+        cairo_show_text(m_cr, label.text.c_str());
+    }
+    cairo_new_path(m_cr);
+    cairo_set_font_size(m_cr, textSize);
+    if (list.overlay.shown)
+    {
+        DrawOverlay(list.overlay, textSize);
+    }
+    if (list.overlay.scaleBar.shown)
+    {
+        DrawScaleBar(list.overlay.scaleBar, textSize);
+    }
+}
+
+void CairoRenderer::Clear(const Color& top, const Color& bottom)
+{
     cairo_identity_matrix(m_cr);
     cairo_set_operator(m_cr, CAIRO_OPERATOR_SOURCE);
-    const Color& bg = m_style.background;
-    cairo_set_source_rgb(m_cr, bg.r, bg.g, bg.b);
-    cairo_paint(m_cr);
+    if (top == bottom)
+    {
+        cairo_set_source_rgb(m_cr, top.r, top.g, top.b);
+        cairo_paint(m_cr);
+    }
+    else
+    {
+        cairo_pattern_t* gradient = cairo_pattern_create_linear(0.0, 0.0, 0.0, m_height);
+        cairo_pattern_add_color_stop_rgb(gradient, 0.0, top.r, top.g, top.b);
+        cairo_pattern_add_color_stop_rgb(gradient, 1.0, bottom.r, bottom.g, bottom.b);
+        cairo_set_source(m_cr, gradient);
+        cairo_paint(m_cr);
+        cairo_pattern_destroy(gradient);
+    }
     cairo_set_operator(m_cr, CAIRO_OPERATOR_OVER);
     cairo_set_line_join(m_cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(m_cr, CAIRO_LINE_CAP_ROUND);
-    m_pass = ShapePass::solid;
 }
 
-void CairoRenderer::SetWorldTransform()
+void CairoRenderer::Shape(const DrawList& list, const ShapeCommand& shape)
 {
-    cairo_identity_matrix(m_cr);
-    cairo_translate(m_cr, 0.5 * m_camera.width, 0.5 * m_camera.height);
-    cairo_scale(m_cr, m_camera.pixelsPerMetre, -m_camera.pixelsPerMetre);
-    cairo_translate(m_cr, -m_camera.center.x, -m_camera.center.y);
-}
-
-void CairoRenderer::Outline(const b2Color& color)
-{
-    cairo_identity_matrix(m_cr); // the path stays where it is; the line width is now in pixels
-    if (m_pass != ShapePass::fills && m_style.outlineWidth > 0.0f)
+    const b2Vec2* points = list.vertices.data() + shape.first;
+    if (shape.kind == ShapeKind::point)
     {
-        cairo_set_source_rgba(m_cr, color.r, color.g, color.b, color.a);
-        cairo_set_line_width(m_cr, m_style.outlineWidth);
+        const b2Vec2 at = list.camera.ToPixels(points[0]);
+        const double size = shape.pointSize;
+        cairo_identity_matrix(m_cr);
+        cairo_set_source_rgba(m_cr, shape.fill.r, shape.fill.g, shape.fill.b, shape.fill.a);
+        cairo_rectangle(m_cr, at.x - 0.5 * size, at.y - 0.5 * size, size, size);
+        cairo_fill(m_cr);
+        return;
+    }
+    SetWorldTransform(m_cr, list.camera);
+    switch (shape.kind)
+    {
+    case ShapeKind::polygon:
+        for (std::uint32_t i = 0; i < shape.count; ++i)
+        {
+            cairo_line_to(m_cr, points[i].x, points[i].y);
+        }
+        cairo_close_path(m_cr);
+        break;
+    case ShapeKind::circle:
+        cairo_arc(m_cr, points[0].x, points[0].y, shape.radius, 0.0, kTurn);
+        break;
+    default: // segment
+        cairo_move_to(m_cr, points[0].x, points[0].y);
+        cairo_line_to(m_cr, points[1].x, points[1].y);
+        break;
+    }
+    if (shape.filled)
+    {
+        cairo_set_source_rgba(m_cr, shape.fill.r, shape.fill.g, shape.fill.b, shape.fill.a);
+        cairo_fill_preserve(m_cr);
+    }
+    cairo_identity_matrix(m_cr); // the path stays where it is; the line width is now in pixels
+    if (shape.strokeWidth > 0.0f)
+    {
+        cairo_set_source_rgba(m_cr, shape.stroke.r, shape.stroke.g, shape.stroke.b, shape.stroke.a);
+        cairo_set_line_width(m_cr, shape.strokeWidth);
         cairo_stroke(m_cr);
     }
     cairo_new_path(m_cr);
 }
 
-void CairoRenderer::FillAndOutline(const b2Color& color)
+void CairoRenderer::Sprite(const SpriteCommand& sprite)
 {
-    const float shade = Clamp01(m_style.fillShade);
-    switch (m_pass)
+    const Color& c = sprite.color;
+    const b2Vec2& at = sprite.head;
+    if (sprite.kind == SpriteKind::streak)
     {
-    case ShapePass::solid:
-        cairo_set_source_rgba(m_cr, color.r * shade, color.g * shade, color.b * shade, color.a);
-        cairo_fill_preserve(m_cr);
-        Outline(color);
-        break;
-    case ShapePass::outlines:
-        cairo_identity_matrix(m_cr);
-        cairo_set_source_rgba(m_cr, color.r, color.g, color.b, color.a);
-        cairo_set_line_width(m_cr, 2.0 * m_style.outlineWidth + 1.0);
+        // Fading towards its tail, with a hot round head; added onto the image so that streaks glow
+        // where they cross.
+        const b2Vec2& tail = sprite.tail;
+        const float width = sprite.size;
+        cairo_set_operator(m_cr, CAIRO_OPERATOR_ADD);
+        cairo_pattern_t* fade = cairo_pattern_create_linear(tail.x, tail.y, at.x, at.y);
+        cairo_pattern_add_color_stop_rgba(fade, 0.0, c.r, c.g, c.b, 0.0);
+        cairo_pattern_add_color_stop_rgba(fade, 1.0, c.r, c.g, c.b, Clamp01(c.a));
+        cairo_set_source(m_cr, fade);
+        cairo_set_line_width(m_cr, width);
+        cairo_move_to(m_cr, tail.x, tail.y);
+        cairo_line_to(m_cr, at.x, at.y);
         cairo_stroke(m_cr);
-        break;
-    case ShapePass::fills:
-        // Half a pixel wider than the shape, so that neighbouring pieces leave no anti-aliased seam.
-        cairo_set_source_rgba(m_cr, color.r * shade, color.g * shade, color.b * shade, color.a);
-        cairo_fill_preserve(m_cr);
-        cairo_identity_matrix(m_cr);
-        cairo_set_line_width(m_cr, 1.0);
-        cairo_stroke(m_cr);
-        break;
-    }
-}
-
-void CairoRenderer::PolygonPath(const b2Vec2* vertices, int32 vertexCount)
-{
-    SetWorldTransform();
-    for (int32 i = 0; i < vertexCount; ++i)
-    {
-        cairo_line_to(m_cr, vertices[i].x, vertices[i].y);
-    }
-    cairo_close_path(m_cr);
-}
-
-void CairoRenderer::DrawPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color)
-{
-    PolygonPath(vertices, vertexCount);
-    Outline(color);
-}
-
-void CairoRenderer::DrawSolidPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color)
-{
-    PolygonPath(vertices, vertexCount);
-    FillAndOutline(color);
-}
-
-void CairoRenderer::DrawCircle(const b2Vec2& center, float radius, const b2Color& color)
-{
-    SetWorldTransform();
-    cairo_arc(m_cr, center.x, center.y, radius, 0.0, kTurn);
-    Outline(color);
-}
-
-void CairoRenderer::DrawSolidCircle(const b2Vec2& center, float radius, const b2Vec2& axis,
-                                    const b2Color& color)
-{
-    SetWorldTransform();
-    cairo_arc(m_cr, center.x, center.y, radius, 0.0, kTurn);
-    FillAndOutline(color);
-    if (m_pass != ShapePass::solid)
-    {
+        cairo_pattern_destroy(fade);
+        cairo_set_source_rgba(m_cr, c.r, c.g, c.b, Clamp01(c.a));
+        cairo_arc(m_cr, at.x, at.y, 0.5 * width, 0.0, kTurn);
+        cairo_fill(m_cr);
+        cairo_set_operator(m_cr, CAIRO_OPERATOR_OVER);
         return;
     }
-    // A spoke shows the rotation, as Box2D's testbed does.
-    SetWorldTransform();
-    cairo_move_to(m_cr, center.x, center.y);
-    cairo_line_to(m_cr, center.x + radius * axis.x, center.y + radius * axis.y);
-    Outline(color);
-}
-
-void CairoRenderer::DrawSegment(const b2Vec2& p1, const b2Vec2& p2, const b2Color& color)
-{
-    SetWorldTransform();
-    cairo_move_to(m_cr, p1.x, p1.y);
-    cairo_line_to(m_cr, p2.x, p2.y);
-    Outline(color);
-}
-
-void CairoRenderer::DrawTransform(const b2Transform& xf)
-{
-    constexpr float kAxisLength = 0.4f; // m
-    const b2Vec2 p = xf.p;
-    DrawSegment(p, p + kAxisLength * xf.q.GetXAxis(), b2Color(1.0f, 0.0f, 0.0f));
-    DrawSegment(p, p + kAxisLength * xf.q.GetYAxis(), b2Color(0.0f, 1.0f, 0.0f));
-}
-
-void CairoRenderer::DrawPoint(const b2Vec2& p, float size, const b2Color& color)
-{
-    const b2Vec2 at = m_camera.ToPixels(p);
-    cairo_identity_matrix(m_cr);
-    cairo_set_source_rgba(m_cr, color.r, color.g, color.b, color.a);
-    cairo_rectangle(m_cr, at.x - 0.5 * size, at.y - 0.5 * size, size, size);
-    cairo_fill(m_cr);
-}
-
-void CairoRenderer::DrawParticles(std::span<const ParticleSprite> sprites)
-{
-    cairo_identity_matrix(m_cr);
-    const float minSize = std::max(m_style.minSpriteSize, 0.5f);
-    const float ppm = m_camera.pixelsPerMetre;
-    const double reach = 0.5 * std::max(m_width, m_height);
-    for (const ParticleSprite& sprite : sprites)
+    if (sprite.kind == SpriteKind::grain)
     {
-        const Color& c = sprite.color;
-        if (!(c.a > 0.0f))
-        {
-            continue;
-        }
-        const b2Vec2 at = m_camera.ToPixels(sprite.position);
-        const float size = std::max(sprite.size * ppm, minSize);
-        if (!(std::abs(at.x - 0.5 * m_width) < reach + size &&
-              std::abs(at.y - 0.5 * m_height) < reach + size))
-        {
-            continue; // off screen (or not a number)
-        }
-        if (sprite.streak > 0.0f)
-        {
-            // A spark: a line over the last `streak` seconds of its motion, half as thick as the sprite
-            // is big, fading towards its tail, with a hot round head; added onto the image so that
-            // sparks glow where they cross.
-            const float width = std::max(0.5f * size, 0.75f * minSize);
-            const b2Vec2 tail(at.x - sprite.velocity.x * sprite.streak * ppm,
-                              at.y + sprite.velocity.y * sprite.streak * ppm);
-            cairo_set_operator(m_cr, CAIRO_OPERATOR_ADD);
-            cairo_pattern_t* fade = cairo_pattern_create_linear(tail.x, tail.y, at.x, at.y);
-            cairo_pattern_add_color_stop_rgba(fade, 0.0, c.r, c.g, c.b, 0.0);
-            cairo_pattern_add_color_stop_rgba(fade, 1.0, c.r, c.g, c.b, Clamp01(c.a));
-            cairo_set_source(m_cr, fade);
-            cairo_set_line_width(m_cr, width);
-            cairo_move_to(m_cr, tail.x, tail.y);
-            cairo_line_to(m_cr, at.x, at.y);
-            cairo_stroke(m_cr);
-            cairo_pattern_destroy(fade);
-            cairo_set_source_rgba(m_cr, c.r, c.g, c.b, Clamp01(c.a));
-            cairo_arc(m_cr, at.x, at.y, 0.5 * width, 0.0, kTurn);
-            cairo_fill(m_cr);
-            cairo_set_operator(m_cr, CAIRO_OPERATOR_OVER);
-            continue;
-        }
-        // A soft point: full colour in the middle, fading to nothing at its edge. Points of a few pixels
-        // keep a solid core so that they still read; big ones (smoke) are soft all through.
-        const double radius = 0.5 * size;
-        const double core = 1.0 - 0.45 * std::clamp((radius - 2.0) / 6.0, 0.0, 1.0);
-        cairo_pattern_t* soft = cairo_pattern_create_radial(at.x, at.y, 0.0, at.x, at.y, radius);
-        cairo_pattern_add_color_stop_rgba(soft, 0.0, c.r, c.g, c.b, Clamp01(c.a));
-        cairo_pattern_add_color_stop_rgba(soft, 0.5, c.r, c.g, c.b, Clamp01(c.a) * core);
-        cairo_pattern_add_color_stop_rgba(soft, 1.0, c.r, c.g, c.b, 0.0);
-        cairo_set_source(m_cr, soft);
+        const double radius = 0.5 * sprite.size;
+        const Color& rim = sprite.rim;
+        cairo_set_source_rgba(m_cr, rim.r, rim.g, rim.b, Clamp01(rim.a));
         cairo_arc(m_cr, at.x, at.y, radius, 0.0, kTurn);
         cairo_fill(m_cr);
-        cairo_pattern_destroy(soft);
+        cairo_set_source_rgba(m_cr, c.r, c.g, c.b, Clamp01(c.a));
+        cairo_arc(m_cr, at.x, at.y, std::max(radius - sprite.rimWidth, 0.0), 0.0, kTurn);
+        cairo_fill(m_cr);
+        return;
     }
+    if (sprite.kind == SpriteKind::glow)
+    {
+        // Brightest in the middle, falling off quickly, added onto the image.
+        const double radius = 0.5 * sprite.size;
+        cairo_set_operator(m_cr, CAIRO_OPERATOR_ADD);
+        cairo_pattern_t* halo = cairo_pattern_create_radial(at.x, at.y, 0.0, at.x, at.y, radius);
+        cairo_pattern_add_color_stop_rgba(halo, 0.0, c.r, c.g, c.b, Clamp01(c.a));
+        cairo_pattern_add_color_stop_rgba(halo, 0.3, c.r, c.g, c.b, 0.4 * Clamp01(c.a));
+        cairo_pattern_add_color_stop_rgba(halo, 1.0, c.r, c.g, c.b, 0.0);
+        cairo_set_source(m_cr, halo);
+        cairo_arc(m_cr, at.x, at.y, radius, 0.0, kTurn);
+        cairo_fill(m_cr);
+        cairo_pattern_destroy(halo);
+        cairo_set_operator(m_cr, CAIRO_OPERATOR_OVER);
+        return;
+    }
+    // A soft point: full colour in the middle, fading to nothing at its edge. Points of a few pixels
+    // keep a solid core so that they still read; big ones (smoke) are soft all through.
+    const double radius = 0.5 * sprite.size;
+    const double core = 1.0 - 0.45 * std::clamp((radius - 2.0) / 6.0, 0.0, 1.0);
+    cairo_pattern_t* soft = cairo_pattern_create_radial(at.x, at.y, 0.0, at.x, at.y, radius);
+    cairo_pattern_add_color_stop_rgba(soft, 0.0, c.r, c.g, c.b, Clamp01(c.a));
+    cairo_pattern_add_color_stop_rgba(soft, 0.5, c.r, c.g, c.b, Clamp01(c.a) * core);
+    cairo_pattern_add_color_stop_rgba(soft, 1.0, c.r, c.g, c.b, 0.0);
+    cairo_set_source(m_cr, soft);
+    cairo_arc(m_cr, at.x, at.y, radius, 0.0, kTurn);
+    cairo_fill(m_cr);
+    cairo_pattern_destroy(soft);
 }
 
-void CairoRenderer::DrawOverlay(const std::string& title, std::span<const LegendEntry> legend)
+void CairoRenderer::DrawScaleBar(const ScaleBar& bar, double textSize)
 {
+    const double x0 = bar.from.x;
+    const double x1 = bar.from.x + bar.pixels;
+    const double y = bar.from.y;
+    const double tick = 0.35 * textSize;
+    cairo_set_source_rgba(m_cr, 0.92, 0.92, 0.92, 0.9);
+    cairo_set_line_width(m_cr, 2.0);
+    cairo_move_to(m_cr, x0, y - tick);
+    cairo_line_to(m_cr, x0, y);
+    cairo_line_to(m_cr, x1, y);
+    cairo_line_to(m_cr, x1, y - tick);
+    cairo_stroke(m_cr);
+    cairo_move_to(m_cr, x0 + 0.3 * textSize, y - 0.5 * textSize);
+    cairo_show_text(m_cr, bar.label.c_str());
+    cairo_new_path(m_cr);
+}
+
+void CairoRenderer::DrawOverlay(const Overlay& overlay, double size)
+{
+    const std::string& title = overlay.title;
+    const std::vector<LegendEntry>& legend = overlay.legend;
     cairo_identity_matrix(m_cr);
-    const double size = m_style.textSize > 0.0f ? m_style.textSize : std::max(9.0, 0.026 * m_height);
-    cairo_select_font_face(m_cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(m_cr, size);
     const double pad = 0.6 * size;
     const double lineHeight = 1.35 * size;
     const double dot = 0.7 * size;
@@ -344,7 +354,7 @@ int CairoRenderer::Stride() const
 
 std::string CairoRenderer::EncodePng() const
 {
-    return detail::EncodePng(m_surface);
+    return render::EncodePng(Rows(), m_width, m_height, Stride());
 }
 
 } // namespace cfx::render

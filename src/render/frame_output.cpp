@@ -4,8 +4,8 @@
 #include "contactfx/render/frame_output.h"
 
 #include "contactfx/error.h"
+#include "contactfx/files/text_file.h"
 #include "contactfx/render/cairo_renderer.h"
-#include "contactfx/scene/text_file.h"
 
 #include <algorithm>
 #include <atomic>

@@ -4,7 +4,7 @@
 #include "contactfx/render/tuning_plot.h"
 
 #include "contactfx/effects.h"
-#include "png_bytes.h"
+#include "contactfx/render/png.h"
 
 #include <algorithm>
 #include <cairo.h>
@@ -348,7 +348,10 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
     Text(cr, kLeft + 0.5 * panelWidth, bottom + 36.0, "time (s)", 0.5);
 
     cairo_destroy(cr);
-    return detail::EncodePng(image.get());
+    cairo_surface_flush(image.get());
+    return EncodePng(cairo_image_surface_get_data(image.get()), cairo_image_surface_get_width(image.get()),
+                     cairo_image_surface_get_height(image.get()),
+                     cairo_image_surface_get_stride(image.get()));
 }
 
 } // namespace cfx::render

@@ -7,7 +7,7 @@
 #include "contactfx/scene/effects_json.h"
 
 #include "contactfx/config_fields.h"
-#include "contactfx/scene/text_file.h"
+#include "contactfx/files/text_file.h"
 #include "scene/json_reader.h"
 #include "scene/json_text.h"
 #include "scene/json_writer.h"
@@ -152,8 +152,10 @@ void CheckKnownKeys(const Json& object, const std::string& path, std::span<const
 
 // The fields of one object of struct S: its unknown keys, then every field in table order, nested objects
 // last (so problems are listed as the reader has always listed them).
+// `lists` names the object's members that are lists read by the caller (the `rules` of `sound`).
 template <typename S>
-void ReadObject(const ObjectReader& reader, const Json& object, std::span<const Field<S>> fields, S& out)
+void ReadObject(const ObjectReader& reader, const Json& object, std::span<const Field<S>> fields, S& out,
+                std::span<const std::string_view> lists = {})
 {
     std::vector<std::string_view> known;
     for (const Field<S>& field : fields)
@@ -170,6 +172,7 @@ void ReadObject(const ObjectReader& reader, const Json& object, std::span<const 
             known.push_back(field.name);
         }
     }
+    known.insert(known.end(), lists.begin(), lists.end());
     CheckKnownKeys(object, reader.Path(), known, reader.Diagnostics());
     for (const Field<S>& field : fields)
     {
@@ -229,8 +232,8 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         return config;
     }
     ObjectReader top(root, "", diagnostics);
-    static constexpr std::string_view kTopKeys[] = {"name",  "materials", "particleTypes",
-                                                    "rules", "budget",    "assignments"};
+    static constexpr std::string_view kTopKeys[] = {"name",   "materials",   "particleTypes", "rules",
+                                                    "budget", "assignments", "sound"};
     CheckKnownKeys(root, "", kTopKeys, diagnostics);
     config.name = top.String("name");
 
@@ -270,6 +273,19 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
     if (const Json* budget = top.Object("budget"))
     {
         ReadObject(ObjectReader(*budget, "budget", diagnostics), *budget, BudgetFields(), config.budget);
+    }
+    if (const Json* sound = top.Object("sound"))
+    {
+        static constexpr std::string_view kSoundLists[] = {"rules"};
+        const ObjectReader reader(*sound, "sound", diagnostics);
+        ReadObject(reader, *sound, SoundFields(), config.sound, kSoundLists);
+        ForEachObject(reader, "rules",
+                      [&](const ObjectReader& ruleReader, const Json& object)
+                      {
+                          SoundRuleDef rule;
+                          ReadObject(ruleReader, object, SoundRuleFields(), rule);
+                          config.sound.rules.push_back(rule);
+                      });
     }
     return config;
 }
@@ -410,6 +426,13 @@ std::string SaveEffectsString(const EffectsConfig& config)
         root["assignments"].push_back(WriteObject(AssignmentFields(), assignment));
     }
     root["budget"] = WriteObject(BudgetFields(), config.budget);
+    Json sound = WriteObject(SoundFields(), config.sound);
+    sound["rules"] = Json::array();
+    for (const SoundRuleDef& rule : config.sound.rules)
+    {
+        sound["rules"].push_back(WriteObject(SoundRuleFields(), rule));
+    }
+    root["sound"] = std::move(sound);
     return root.dump(2) + "\n";
 }
 

@@ -1,6 +1,6 @@
 // LoadRubeFile, LoadRubeString, ValidateRubeFile: text -> JSON -> checked document -> Scene.
+#include "contactfx/files/text_file.h"
 #include "contactfx/scene/rube.h"
-#include "contactfx/scene/text_file.h"
 #include "scene/json_text.h"
 #include "scene/rube_reader.h"
 #include "scene/scene_builder.h"

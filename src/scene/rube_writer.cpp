@@ -3,8 +3,8 @@
 // Numbers are written as plain JSON numbers that read back to the same floats (not b2dJson's hex strings).
 // Objects the scene knows are written in scene order with their names and custom properties; objects the
 // application added to the world afterwards follow in creation order; destroyed ones are left out.
+#include "contactfx/files/text_file.h"
 #include "contactfx/scene/rube.h"
-#include "contactfx/scene/text_file.h"
 #include "scene/custom_properties_json.h"
 #include "scene/json_writer.h"
 #include "scene/rube_joints.h"

@@ -103,6 +103,18 @@ TEST(CliRun, EventsFileHasOneObjectPerLineForEveryEvent)
         const nlohmann::json event = nlohmann::json::parse(line);
         const std::string type = event["type"];
         ++types[type];
+        if (type == "particle_hits") // the step's particles of one type that hit one body
+        {
+            for (const char* key : {"step", "time", "particle_type", "count", "point", "mean_speed"})
+            {
+                ASSERT_TRUE(event.contains(key)) << key << " in " << line;
+            }
+            EXPECT_GE(event["count"].get<int>(), 1) << line;
+            EXPECT_GT(event["mean_speed"].get<double>(), 0.0) << line;
+            EXPECT_GE(event["time"].get<double>(), lastTime);
+            lastTime = event["time"];
+            continue;
+        }
         for (const char* key : {"step", "time", "id", "pair", "point"})
         {
             ASSERT_TRUE(event.contains(key)) << key << " in " << line;
@@ -144,6 +156,7 @@ TEST(CliRun, EventsFileHasOneObjectPerLineForEveryEvent)
     EXPECT_GT(types["scrape_changed"], 100);
     EXPECT_GT(types["scrape_ended"], 5);
     EXPECT_GT(types["impact"], 2);
+    EXPECT_GT(types["particle_hits"], 10) << "dirt landing on the hills, sparks on the concrete";
 }
 
 TEST(CliRun, BadInputIsRefusedWithFileAndField)

@@ -24,10 +24,10 @@ int main(int argc, char** argv)
         fx.Step(1.0f / 60.0f);
     }
     cfx::render::CairoRenderer renderer(320, 180);
-    cfx::render::Camera camera = cfx::render::MakeCamera(320, 180, 40.0f, b2Vec2(0.0f, 0.0f));
-    cfx::render::FitWorld(camera, *scene.world);
-    cfx::render::FrameScratch scratch;
-    cfx::render::RenderFrame(fx, 1.0f, camera, cfx::render::FrameOptions{}, renderer, scratch);
+    cfx::Camera camera = cfx::MakeCamera(320, 180, 40.0f, b2Vec2(0.0f, 0.0f));
+    cfx::FitWorld(camera, *scene.world);
+    cfx::FrameScratch scratch;
+    cfx::render::RenderFrame(fx, 1.0f, camera, cfx::FrameOptions{}, renderer, scratch);
     const std::string png = renderer.EncodePng();
     std::printf("%zu bodies, %u particles alive, a %zu-byte PNG\n", scene.bodies.size(), fx.Particles().count,
                 png.size());

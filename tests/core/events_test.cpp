@@ -27,6 +27,7 @@ struct ScrapeScene : TestWorld
         box = CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
         EffectsDef def;
         def.config = std::move(config);
+        def.config.budget.particleHits = 0; // contact events only: no sparks landing among them
         def.eventListener = &log;
         effects = std::make_unique<Effects>(*world, def);
         effects->SetMaterial(ground, Material("concrete"));

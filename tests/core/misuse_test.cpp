@@ -5,6 +5,7 @@
 #include "contact_tracker.h"
 #include "effects_access.h"
 #include "emitter.h"
+#include "events.h"
 #include "fixture_materials.h"
 #include "test_world.h"
 
@@ -94,7 +95,8 @@ struct RawEmitter : TestWorld
 {
     explicit RawEmitter(EffectsConfig effectsConfig)
         : config(std::move(effectsConfig)), rules(BuildRuleTable(config)), tracker(rules, materials),
-          particles(*world, config.particleTypes, config.budget), emitter(config, 1)
+          particles(*world, config.particleTypes, config.budget), emitter(config, 1),
+          events(materials, config.budget.contacts)
     {
         stats.spawnedByType.assign(config.particleTypes.size(), 0);
         stats.rules.assign(config.rules.size(), RuleStats{});
@@ -113,10 +115,10 @@ struct RawEmitter : TestWorld
     void Emit()
     {
         tracker.Prune();
-        events.clear();
-        emitter.Emit(*world, config, tracker, particles, stats, events, kDt);
+        events.BeginStep(tracker.Step(), kDt, tracker.EndedPairs());
+        emitter.Emit(*world, config, tracker, events, particles, stats, kDt);
+        tracker.EndStep(); // as Effects::Step does: before the particle step
         particles.Step(kDt, world->GetGravity());
-        tracker.EndStep();
     }
     void Slide(float speed, int steps)
     {
@@ -136,8 +138,8 @@ struct RawEmitter : TestWorld
     ContactTracker tracker;
     ParticleSystem particles; // destroyed before the world (a base)
     detail::Emitter emitter;
+    detail::EventTracker events;
     EffectsStats stats;
-    std::vector<EffectEvent> events;
     b2Body* ground = nullptr;
     b2Body* box = nullptr;
 };
@@ -494,11 +496,11 @@ TEST(EmitterBounds, HugeRateSpawnsAtMostThePoolPerStep)
         {
             scene.Slide(6.0f, 1);
             EXPECT_LE(scene.Sparks().spawnedLastStep, 64u) << rate;
-            EXPECT_TRUE(std::isfinite(scene.tracker.Pair(0).emissionCarry));
+            EXPECT_TRUE(std::isfinite(scene.emitter.EmissionCarry(0)));
         }
         EXPECT_EQ(scene.Sparks().spawnedLastStep, 64u) << rate;
         EXPECT_LE(scene.particles.Count(), 64u);
-        for (const EffectEvent& event : scene.events)
+        for (const EffectEvent& event : scene.events.Events())
         {
             ExpectFinite(event);
         }
@@ -513,7 +515,7 @@ TEST(EmitterBounds, NaNRateSpawnsNothing)
     RawEmitter scene(std::move(config));
     scene.Slide(6.0f, 20);
     EXPECT_EQ(scene.Sparks().spawned, 0u);
-    EXPECT_EQ(scene.tracker.Pair(0).emissionCarry, 0.0f);
+    EXPECT_EQ(scene.emitter.EmissionCarry(0), 0.0f);
 }
 
 TEST(EmitterBounds, HugeBurstSpawnsAtMostThePool)
@@ -567,14 +569,14 @@ TEST(EmitterBounds, NonFiniteImpactMakesNoEvent)
         scene.world->Step(kDt, 8, 3);
         for (TrackedContact& tracked : scene.tracker.Contacts(RuleId{0}))
         {
-            if (tracked.impactPending)
+            if (tracked.newTouch)
             {
                 tracked.approachSpeed = kInf; // a body given an infinite velocity as it touched
                 injected = true;
             }
         }
         scene.Emit();
-        for (const EffectEvent& event : scene.events)
+        for (const EffectEvent& event : scene.events.Events())
         {
             EXPECT_NE(event.type, EffectEventType::impact);
             ExpectFinite(event);

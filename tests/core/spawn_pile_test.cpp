@@ -1,6 +1,6 @@
 // Spawn never inside: in piles and crevices, where no free start point exists near a contact, the
 // particle is not spawned and is counted as rejected (issue 14, item 2).
-#include "spawn.h"
+#include "spawn_point.h"
 #include "test_world.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "spawn.h"
+#include "spawn_point.h"
 #include "test_world.h"
 
 #include <cmath>

@@ -1,4 +1,6 @@
+#include "contact_tracker.h"
 #include "effects_access.h"
+#include "fixture_materials.h"
 #include "test_world.h"
 
 #include <gtest/gtest.h>
@@ -33,7 +35,120 @@ struct BoxOnGround : TestWorld
     b2Body* box = nullptr;
 };
 
+// The tracker alone, without Effects: the test plays Effects::Step's part (Prune ... EndStep).
+struct RawTracker : TestWorld
+{
+    RawTracker()
+        : config(OneRule("steel", "concrete")), rules(BuildRuleTable(config)), tracker(rules, materials)
+    {
+        world->SetContactListener(&tracker);
+        ground = CreateGround();
+        box = CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        materials.Set(Steel(), config.FindMaterial("steel"));
+        materials.Set(Concrete(), config.FindMaterial("concrete"));
+    }
+    ~RawTracker() { world->SetContactListener(nullptr); }
+
+    b2Fixture* Steel() const { return box->GetFixtureList(); }
+    b2Fixture* Concrete() const { return ground->GetFixtureList(); }
+    void WorldStep()
+    {
+        world->Step(1.0f / 60.0f, 8, 3);
+        tracker.Prune();
+    }
+    void Lift()
+    {
+        box->SetTransform(b2Vec2(0.0f, 5.0f), 0.0f);
+        box->SetLinearVelocity(b2Vec2(0.0f, 0.0f));
+        WorldStep();
+        WorldStep();
+    }
+    void Land()
+    {
+        box->SetTransform(b2Vec2(0.0f, 0.5f), 0.0f);
+        WorldStep();
+    }
+
+    EffectsConfig config;
+    RuleTable rules;
+    FixtureMaterials materials;
+    ContactTracker tracker;
+    b2Body* ground = nullptr;
+    b2Body* box = nullptr;
+};
+
 } // namespace
+
+TEST(ContactTracker, EndedPairsListsOnlyPairsAStepHasSeen)
+{
+    RawTracker scene;
+    scene.Land();
+    ASSERT_EQ(scene.tracker.PairCount(), 1u);
+    scene.Lift(); // touched and parted between two steps: no step saw the pair
+    EXPECT_EQ(scene.tracker.PairCount(), 0u);
+    EXPECT_TRUE(scene.tracker.EndedPairs().empty());
+
+    scene.Land();
+    const std::uint32_t slot = scene.tracker.Contacts(RuleId{0})[0].pair;
+    scene.tracker.EndStep(); // a step saw it
+    scene.Lift();
+    ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
+    const EndedPair& ended = scene.tracker.EndedPairs()[0];
+    EXPECT_EQ(ended.slot, slot);
+    EXPECT_FALSE(ended.destroyed);
+    EXPECT_EQ(ended.fixtureA, scene.Steel()) << "the rule's order: steel is its materialA";
+    EXPECT_EQ(ended.fixtureB, scene.Concrete());
+    EXPECT_EQ(ended.materialA, scene.config.FindMaterial("steel"));
+    EXPECT_EQ(ended.materialB, scene.config.FindMaterial("concrete"));
+    scene.tracker.EndStep();
+    EXPECT_TRUE(scene.tracker.EndedPairs().empty());
+}
+
+TEST(ContactTracker, ForgottenFixtureEndsItsPairAsDestroyed)
+{
+    RawTracker scene;
+    scene.Land();
+    scene.tracker.EndStep();
+    scene.tracker.ForgetFixture(scene.Steel());
+    ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
+    EXPECT_TRUE(scene.tracker.EndedPairs()[0].destroyed);
+}
+
+TEST(ContactTracker, DestroyedBodyMarksItsEndedPair)
+{
+    RawTracker scene;
+    scene.Land();
+    scene.tracker.EndStep();
+    const b2Fixture* steel = scene.Steel();
+    scene.world->DestroyBody(scene.box); // EndContact: ended as if parted
+    ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
+    EXPECT_FALSE(scene.tracker.EndedPairs()[0].destroyed);
+    scene.tracker.MarkDestroyed(steel); // what Effects' destruction listener does next
+    EXPECT_TRUE(scene.tracker.EndedPairs()[0].destroyed);
+}
+
+TEST(ContactTracker, NewTouchLastsUntilEndStep)
+{
+    RawTracker scene;
+    scene.box->SetTransform(b2Vec2(0.0f, 0.6f), 0.0f);
+    scene.box->SetLinearVelocity(b2Vec2(0.0f, -3.0f));
+    for (int i = 0; i < 30 && scene.tracker.TrackedCount() == 0; ++i)
+    {
+        scene.WorldStep();
+        if (scene.tracker.TrackedCount() == 0)
+        {
+            scene.tracker.EndStep();
+        }
+    }
+    ASSERT_EQ(scene.tracker.TrackedCount(), 1u);
+    const TrackedContact& tracked = scene.tracker.Contacts(RuleId{0})[0];
+    EXPECT_TRUE(tracked.newTouch);
+    EXPECT_GT(tracked.approachSpeed, 2.0f) << "falling at 3 m/s when it touched, before the solver";
+    scene.tracker.EndStep();
+    EXPECT_FALSE(tracked.newTouch);
+    scene.WorldStep();
+    EXPECT_FALSE(scene.tracker.Contacts(RuleId{0})[0].newTouch) << "still touching is no new touch";
+}
 
 TEST(ContactTracker, TracksTouchingContactsOfARule)
 {

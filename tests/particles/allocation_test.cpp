@@ -1,6 +1,7 @@
 // Steady state is allocation-free: this binary replaces the global operator new with one that counts,
 // warms a particle system up (static cache built, helper thread started, vectors grown), then steps it
-// with spawning, dying, recycling, moving bodies and both threads, and asks for zero allocations.
+// with spawning, dying, recycling, moving bodies, particle hits and both threads, and asks for zero
+// allocations.
 // Body-backed particles are Box2D's to allocate (its block allocator), so they are not part of this.
 #include "allocation_counter.h"
 #include "test_world.h"
@@ -55,11 +56,14 @@ void RunSteadyState(RecyclePolicy policy)
     ASSERT_EQ(particles.ThreadsUsed(), 2u);
     ASSERT_GT(particles.Recycled(), 0u);
     const long before = Allocations();
+    int stepsWithHits = 0;
     for (int i = 0; i < 120; ++i)
     {
         step();
+        stepsWithHits += particles.Hits().empty() ? 0 : 1;
     }
     EXPECT_EQ(Allocations() - before, 0) << "allocations in 120 warmed-up steps";
+    EXPECT_GT(stepsWithHits, 60) << "particle hits were recorded and grouped";
     EXPECT_GT(box->GetPosition().y, -1.0f);
 }
 

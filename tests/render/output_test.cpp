@@ -62,13 +62,26 @@ TEST(Output, FindsProgramsOnThePathOnly)
     ::setenv("PATH", path.c_str(), 1);
 }
 
+namespace
+{
+
+// An 8 x 6 picture of the background only.
+DrawList BlankList()
+{
+    DrawList list;
+    list.Begin(MakeCamera(8, 6, 1.0f, b2Vec2(0.0f, 0.0f)), DrawStyle{}.background);
+    return list;
+}
+
+} // namespace
+
 TEST(Output, ASequenceLeftUnfinishedRemovesTheFramesItWrote)
 {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "contactfx_test_sequence_sink";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     render::CairoRenderer frame(8, 6);
-    frame.Begin(render::MakeCamera(8, 6, 1.0f, b2Vec2(0.0f, 0.0f)));
+    frame.Render(BlankList());
     {
         render::PngSequenceSink sink(dir / "f_%02d.png");
         sink.Write(frame);
@@ -108,7 +121,7 @@ TEST(Output, AVideoIsCheckedWithFfprobeAndLeftInTheCallersTemporaryFile)
     const std::filesystem::path dir = FreshDir("contactfx_test_video_temporary");
     const std::filesystem::path temporary = dir / ".clip.mp4.mine";
     render::CairoRenderer frame(8, 6);
-    frame.Begin(render::MakeCamera(8, 6, 1.0f, b2Vec2(0.0f, 0.0f)));
+    frame.Render(BlankList());
     {
         render::VideoSink sink(dir / "clip.mp4", render::OutputKind::mp4, 8, 6, 10.0, temporary);
         for (int i = 0; i < 3; ++i)

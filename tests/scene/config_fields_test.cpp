@@ -5,8 +5,8 @@
 // CONTACTFX_UPDATE_DOCS=1 makes DocsShowEveryFieldWithItsRangeAndDefault rewrite the generated tables of
 // docs/effects-config.md instead of failing.
 #include "contactfx/config_fields.h"
+#include "contactfx/files/text_file.h"
 #include "contactfx/scene/effects_json.h"
-#include "contactfx/scene/text_file.h"
 
 #include <charconv>
 #include <cmath>
@@ -40,6 +40,7 @@ EffectsConfig BaseConfig()
     MaterialAssignment assignment;
     assignment.material = "m1";
     config.assignments = {assignment};
+    config.sound.rules = {SoundRuleDef{.materialA = "m1", .materialB = "m2"}};
     return config;
 }
 
@@ -70,6 +71,16 @@ template <> struct Slot<ParticleBudget>
     static ParticleBudget& In(EffectsConfig& config) { return config.budget; }
     static std::string Path() { return "budget"; }
 };
+template <> struct Slot<SoundConfig>
+{
+    static SoundConfig& In(EffectsConfig& config) { return config.sound; }
+    static std::string Path() { return "sound"; }
+};
+template <> struct Slot<SoundRuleDef>
+{
+    static SoundRuleDef& In(EffectsConfig& config) { return config.sound.rules[0]; }
+    static std::string Path() { return "sound.rules[0]"; }
+};
 
 // The struct a table describes.
 template <typename T> struct StructOfTable;
@@ -87,6 +98,8 @@ template <typename F> void ForEachTable(F&& each)
     each(IntensityFields());
     each(AssignmentFields());
     each(BudgetFields());
+    each(SoundFields());
+    each(SoundRuleFields());
 }
 
 // A valid value of the field other than the one `value` has.
@@ -262,6 +275,10 @@ TEST(ConfigFields, TheWriterWritesExactlyTheTablesFields)
     EXPECT_EQ(keysOf(root["rules"][0]["intensity"]), namesOf(IntensityFields()));
     EXPECT_EQ(keysOf(root["assignments"][0]), namesOf(AssignmentFields()));
     EXPECT_EQ(keysOf(root["budget"]), namesOf(BudgetFields()));
+    std::set<std::string> soundKeys = namesOf(SoundFields());
+    soundKeys.insert("rules");
+    EXPECT_EQ(keysOf(root["sound"]), soundKeys);
+    EXPECT_EQ(keysOf(root["sound"]["rules"][0]), namesOf(SoundRuleFields()));
 }
 
 TEST(ConfigFields, EveryKeyIsKnownAndAMisspeltOneIsNamed)
@@ -275,9 +292,13 @@ TEST(ConfigFields, EveryKeyIsKnownAndAMisspeltOneIsNamed)
                 nlohmann::json root = nlohmann::json::parse(SaveEffectsString(BaseConfig()));
                 nlohmann::json* object = &root;
                 const std::string path = Slot<S>::Path();
-                if (path == "budget")
+                if (path == "budget" || path == "sound")
                 {
-                    object = &root["budget"];
+                    object = &root[path];
+                }
+                else if (path == "sound.rules[0]")
+                {
+                    object = &root["sound"]["rules"][0];
                 }
                 else
                 {
@@ -534,6 +555,8 @@ TEST(ConfigFields, DocsShowEveryFieldWithItsRangeAndDefault)
         {"rules", DocTable(RuleFields())},
         {"assignments", DocTable(AssignmentFields())},
         {"budget", DocTable(BudgetFields())},
+        {"sound", DocTable(SoundFields())},
+        {"soundRules", DocTable(SoundRuleFields())},
     };
     const bool update = std::getenv("CONTACTFX_UPDATE_DOCS") != nullptr;
     for (const DocBlock& block : blocks)

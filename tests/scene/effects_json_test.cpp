@@ -1,6 +1,6 @@
+#include "contactfx/files/text_file.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
-#include "contactfx/scene/text_file.h"
 
 #include <cmath>
 #include <filesystem>

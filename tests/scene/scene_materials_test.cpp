@@ -1,6 +1,6 @@
 // Scene fixtures -> materials: the `material` property first, then the config's assignment rules, so that
 // the tutorial scene without a single `material` property gets exactly the tutorial's materials.
-#include "contactfx/scene/text_file.h"
+#include "contactfx/files/text_file.h"
 #include "harness/simulation.h"
 #include "scene/rube_test_util.h"
 

@@ -1,5 +1,5 @@
 // The tutorial scene end to end, through the same Simulation the CLI uses.
-#include "contactfx/scene/text_file.h"
+#include "contactfx/files/text_file.h"
 #include "harness/simulation.h"
 
 #include <fstream>

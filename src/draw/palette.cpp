@@ -1,5 +1,5 @@
 // Shape colours by material, and the walk over a world's fixtures that feeds them to a b2Draw.
-#include "contactfx/render/palette.h"
+#include "contactfx/draw/palette.h"
 
 #include "contactfx/effects.h"
 
@@ -12,7 +12,7 @@
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 
-namespace cfx::render
+namespace cfx
 {
 
 ShapePalette TutorialPalette()
@@ -120,4 +120,4 @@ void DrawShapes(const Effects& effects, b2Draw& draw, const ShapePalette& palett
     }
 }
 
-} // namespace cfx::render
+} // namespace cfx

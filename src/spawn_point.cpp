@@ -1,4 +1,4 @@
-#include "spawn.h"
+#include "spawn_point.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>

@@ -1,5 +1,5 @@
 // Camera placement: following a body and fitting the world's fixtures into view.
-#include "contactfx/render/camera.h"
+#include "contactfx/draw/camera.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-namespace cfx::render
+namespace cfx
 {
 
 namespace
@@ -92,4 +92,4 @@ void FitWorld(Camera& camera, const b2World& world, float margin)
     camera.center = 0.5f * (bounds.lower + bounds.upper);
 }
 
-} // namespace cfx::render
+} // namespace cfx

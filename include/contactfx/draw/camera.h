@@ -1,8 +1,8 @@
-// contactfx_render: where the picture looks.
+// contactfx drawing layer: where the picture looks.
 //
 // A 2D camera maps world metres (y up) to image pixels (y down) by a centre and a scale. Renderers ask
-// it for the transform; front ends move it: fit it to the whole world, or centre it on a body each frame
-// so a moving car stays in view. A camera is a plain value with no link to the world.
+// it for the transform (a DrawList carries one); front ends move it: fit it to the whole world, or centre it
+// on a body each frame so a moving car stays in view. A camera is a plain value with no link to the world.
 #pragma once
 
 #include <box2d/b2_math.h>
@@ -10,7 +10,7 @@
 class b2Body;
 class b2World;
 
-namespace cfx::render
+namespace cfx
 {
 
 struct Camera
@@ -53,4 +53,4 @@ void FollowSmoothly(Camera& camera, const b2Body& body, float lift, float dt, fl
 /// image, [0, 0.5)). A world with no fixture leaves the camera unchanged.
 void FitWorld(Camera& camera, const b2World& world, float margin = 0.05f);
 
-} // namespace cfx::render
+} // namespace cfx

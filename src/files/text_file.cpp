@@ -1,4 +1,7 @@
-#include "contactfx/scene/text_file.h"
+// Whole files in and out. Outputs are checked first (OutputFileProblem: never over a device, a directory or
+// a read-only file), then written to an exclusive temporary file beside the target, flushed to disk and
+// renamed over it, so that readers see the old file or the new one.
+#include "contactfx/files/text_file.h"
 
 #include "contactfx/error.h"
 
@@ -9,12 +12,9 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <sys/stat.h>
 #include <system_error>
-
-#if defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
-#define CONTACTFX_HAVE_FSYNC 1
-#endif
 
 namespace cfx
 {
@@ -28,9 +28,7 @@ std::filesystem::path TemporaryPathBeside(const std::filesystem::path& path, int
     const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
     std::string name(".");
     name.append(path.filename().string()).append(".tmp");
-#if defined(CONTACTFX_HAVE_FSYNC)
     name.append("-").append(std::to_string(::getpid()));
-#endif
     name.append("-").append(std::to_string(counter.fetch_add(1)));
     name.append("-").append(std::to_string(ticks % 1000000));
     name.append("-").append(std::to_string(attempt));
@@ -42,13 +40,85 @@ std::filesystem::path TemporaryPathBeside(const std::filesystem::path& path, int
     throw InputError(path.string(), "", "cannot write: " + message);
 }
 
+std::string Quoted(const std::filesystem::path& path)
+{
+    return "\"" + path.string() + "\"";
+}
+
+std::string Strerror(int error)
+{
+    return std::strerror(error != 0 ? error : EIO);
+}
+
 } // namespace
+
+std::string OutputFileProblem(const std::filesystem::path& file, const std::filesystem::path& given)
+{
+    namespace fs = std::filesystem;
+    if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
+    {
+        return "names no file";
+    }
+    struct stat info = {};
+    if (::stat(file.c_str(), &info) == 0)
+    {
+        if (S_ISDIR(info.st_mode))
+        {
+            return "is a directory, not a file";
+        }
+        if (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode))
+        {
+            return "is a device, not a regular file: give a file to write";
+        }
+        if (S_ISFIFO(info.st_mode))
+        {
+            return "is a FIFO, not a regular file: give a file to write";
+        }
+        if (!S_ISREG(info.st_mode))
+        {
+            return "is not a regular file";
+        }
+        // Permission bits, not access(): root may write a mode 444 file, but its owner meant it to stay.
+        if ((info.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
+        {
+            char mode[8];
+            std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(info.st_mode & 07777));
+            return std::string("is read-only (mode ") + mode + "): not replaced";
+        }
+        if (::access(file.c_str(), W_OK) != 0)
+        {
+            return "cannot be written: " + Strerror(errno);
+        }
+    }
+    else if (errno != ENOENT)
+    {
+        return "cannot be written: " + Strerror(errno);
+    }
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
+    const fs::path shown = named.parent_path().empty() ? fs::path(".") : named.parent_path();
+    struct stat folderInfo = {};
+    if (::stat(folder.c_str(), &folderInfo) != 0)
+    {
+        return "folder " + Quoted(shown) + " does not exist";
+    }
+    if (!S_ISDIR(folderInfo.st_mode))
+    {
+        return Quoted(shown) + " is not a folder";
+    }
+    if ((folderInfo.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0 ||
+        ::access(folder.c_str(), W_OK | X_OK) != 0)
+    {
+        return "folder " + Quoted(shown) + " is not writable";
+    }
+    return {};
+}
 
 void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view contents)
 {
-    if (!path.has_filename())
+    if (const std::string problem = OutputFileProblem(path); !problem.empty())
     {
-        Fail(path, "the path names no file");
+        throw InputError(path.string(), "", problem);
     }
     std::filesystem::path temporary;
     std::FILE* file = nullptr;
@@ -68,9 +138,7 @@ void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view
 
     bool ok = std::fwrite(contents.data(), 1, contents.size(), file) == contents.size();
     ok = ok && std::fflush(file) == 0;
-#if defined(CONTACTFX_HAVE_FSYNC)
     ok = ok && ::fsync(::fileno(file)) == 0;
-#endif
     const int writeError = errno;
     ok = (std::fclose(file) == 0) && ok;
     if (!ok)

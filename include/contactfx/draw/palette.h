@@ -1,10 +1,10 @@
-// contactfx_render: what colour each shape is.
+// contactfx drawing layer: what colour each shape is.
 //
 // Box2D's own b2World::DebugDraw colours bodies by state (static, sleeping, awake), which says nothing
 // about what they are made of. A viewer of effects wants the car red and the dirt brown, so shapes are
 // coloured by their fixture's material (the tutorial's colours), falling back to the body type for
 // fixtures without a material. DrawShapes walks the world and feeds every fixture to any b2Draw with
-// that colour: the Cairo renderer, the testbed's OpenGL one, or a test's recorder.
+// that colour, usually a ShapeRecorder that writes them into a DrawList (draw_list.h).
 #pragma once
 
 #include <box2d/b2_draw.h>
@@ -15,11 +15,8 @@ class b2Fixture;
 
 namespace cfx
 {
-class Effects;
-}
 
-namespace cfx::render
-{
+class Effects;
 
 /// Colours of shapes.
 struct ShapePalette
@@ -57,4 +54,4 @@ enum class BodyKinds
 void DrawShapes(const Effects& effects, b2Draw& draw, const ShapePalette& palette,
                 BodyKinds kinds = BodyKinds::all);
 
-} // namespace cfx::render
+} // namespace cfx

@@ -1,0 +1,128 @@
+// WriteTextFileAtomically: the whole file or the old one, never over a device, a read-only file or a
+// folder, and no temporary file left behind either way.
+#include "contactfx/error.h"
+#include "contactfx/files/text_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+namespace fs = std::filesystem;
+
+fs::path FreshDir(const char* name)
+{
+    const fs::path dir = fs::temp_directory_path() / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::vector<fs::path> FilesIn(const fs::path& dir)
+{
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    {
+        files.push_back(entry.path().filename());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// The message of the InputError that writing `text` to `path` throws, or "" when none is thrown.
+std::string WriteError(const fs::path& path, std::string_view text)
+{
+    try
+    {
+        WriteTextFileAtomically(path, text);
+    }
+    catch (const InputError& error)
+    {
+        return error.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(TextFile, WritesAndReplacesAWholeFileLeavingNoTemporary)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_write");
+    WriteTextFileAtomically(dir / "out.json", "first");
+    WriteTextFileAtomically(dir / "out.json", "second, longer");
+    EXPECT_EQ(ReadTextFile(dir / "out.json"), "second, longer");
+    EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"out.json"});
+}
+
+TEST(TextFile, RefusesADeviceNamingIt)
+{
+    if (!fs::is_character_file("/dev/full"))
+    {
+        GTEST_SKIP() << "no /dev/full";
+    }
+    const std::string message = WriteError("/dev/full", "bytes");
+    EXPECT_NE(message.find("/dev/full"), std::string::npos) << message;
+    EXPECT_NE(message.find("device"), std::string::npos) << message;
+    EXPECT_TRUE(fs::is_character_file("/dev/full")) << "still the device, not a file renamed over it";
+}
+
+TEST(TextFile, RefusesAReadOnlyFileAndLeavesItAsItWas)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_read_only");
+    const fs::path file = dir / "kept.json";
+    WriteTextFileAtomically(file, "original");
+    fs::permissions(file, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    const std::string message = WriteError(file, "replacement");
+    EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+    EXPECT_NE(message.find("read-only"), std::string::npos) << message;
+    EXPECT_EQ(ReadTextFile(file), "original");
+    EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"kept.json"});
+    fs::permissions(file, fs::perms::owner_write, fs::perm_options::add);
+}
+
+TEST(TextFile, RefusesAFolderAndLeavesItAsItWas)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_folder");
+    fs::create_directories(dir / "frames");
+    WriteTextFileAtomically(dir / "frames" / "inside.txt", "x");
+    const std::string message = WriteError(dir / "frames", "bytes");
+    EXPECT_NE(message.find((dir / "frames").string()), std::string::npos) << message;
+    EXPECT_NE(message.find("directory"), std::string::npos) << message;
+    EXPECT_TRUE(fs::is_directory(dir / "frames"));
+    EXPECT_EQ(FilesIn(dir / "frames"), std::vector<fs::path>{"inside.txt"});
+    EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"frames"});
+}
+
+TEST(TextFile, AMissingFolderIsNamedAsGiven)
+{
+    EXPECT_EQ(OutputFileProblem("no_such_folder_cfx/out.png"),
+              "folder \"no_such_folder_cfx\" does not exist");
+    EXPECT_EQ(OutputFileProblem("/tmp/x/no_such_folder_cfx/out.png", "given/out.png"),
+              "folder \"given\" does not exist");
+    const std::string message = WriteError("no_such_folder_cfx/out.png", "bytes");
+    EXPECT_NE(message.find("no_such_folder_cfx/out.png"), std::string::npos) << message;
+    EXPECT_FALSE(fs::exists("no_such_folder_cfx"));
+}
+
+TEST(TextFile, ReadingAFolderOrAMissingFileNamesIt)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_read");
+    EXPECT_THROW(ReadTextFile(dir), InputError);
+    try
+    {
+        ReadTextFile(dir / "missing.json");
+        ADD_FAILURE() << "read a missing file";
+    }
+    catch (const InputError& error)
+    {
+        EXPECT_NE(std::string(error.what()).find("missing.json"), std::string::npos) << error.what();
+    }
+}
+
+} // namespace cfx::test

@@ -1,0 +1,166 @@
+// Particle hits -> voices (contactfx/sound.h): short ticks and taps per particle type and body, loudness from
+// the number of hits and their mean speed, merged within the impact window, capped with the other voices;
+// then the demo, whose dirt and sparks make them.
+#include "harness/scenes.h"
+#include "harness/simulation.h"
+#include "sound/sound_test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace cfx::test
+{
+
+namespace
+{
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// The particle hits of `count` particles of `type` on the body of `bench.boxes[box]` at `meanSpeed`.
+EffectEvent Hits(const EventBench& bench, int box, std::uint16_t type, std::uint32_t count, float meanSpeed)
+{
+    EffectEvent event;
+    event.type = EffectEventType::particleHits;
+    event.body = bench.boxes[static_cast<std::size_t>(box)]->GetBody();
+    event.particleType = ParticleTypeId{type};
+    event.count = count;
+    event.approachSpeed = meanSpeed;
+    event.point = event.body->GetPosition();
+    return event;
+}
+
+std::uint16_t TypeNamed(const EffectsConfig& config, const char* name)
+{
+    return config.FindParticleType(name).index;
+}
+
+} // namespace
+
+TEST(ParticleHitVoices, LoudnessFollowsCountAndMeanSpeedAndTheVoiceDecaysOverItsLength)
+{
+    EventBench bench(2);
+    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
+    SoundVoices voices(bench.config);
+    const SoundConfig& sound = bench.config.sound;
+    const EffectEvent hits = Hits(bench, 0, dirt, 9, 2.5f);
+    voices.Step(std::span(&hits, 1), kDt);
+    ASSERT_EQ(voices.Voices().size(), 1u);
+    const SoundVoice& voice = voices.Voices()[0];
+    EXPECT_EQ(voice.kind, VoiceKind::particleHits);
+    EXPECT_EQ(voice.particleType, ParticleTypeId{dirt});
+    EXPECT_FALSE(voice.rule.IsValid());
+    EXPECT_EQ(VoiceName(voice, bench.config), "dirt");
+    EXPECT_FLOAT_EQ(voice.loudness, 1.0f - std::exp(-sound.particleHitGain * 2.5f * 3.0f)); // sqrt(9) = 3
+    EXPECT_EQ(voices.VoiceSound(voice).timbre, SoundTimbre::rumble) << "dirt: a soft tap";
+    // Silent steps: it decays and stops within its length.
+    const int lengthSteps = static_cast<int>(std::ceil(sound.particleHitLength / kDt));
+    int stoppedAfter = 0;
+    for (int step = 1; step <= lengthSteps + 1 && stoppedAfter == 0; ++step)
+    {
+        voices.Step({}, kDt);
+        stoppedAfter = voices.Voices().empty() ? step : 0;
+    }
+    EXPECT_GE(stoppedAfter, lengthSteps - 1);
+    EXPECT_LE(stoppedAfter, lengthSteps + 1);
+    EXPECT_EQ(voices.Stats().particleHitVoices, 1u);
+}
+
+TEST(ParticleHitVoices, AreOnePerTypeAndBodyAndMergeWithinTheWindow)
+{
+    EventBench bench(2);
+    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
+    const std::uint16_t sparks = TypeNamed(bench.config, "sparks");
+    SoundVoices voices(bench.config);
+    const std::vector<EffectEvent> first{Hits(bench, 0, dirt, 4, 2.0f), Hits(bench, 1, dirt, 4, 2.0f),
+                                         Hits(bench, 0, sparks, 2, 6.0f)};
+    voices.Step(first, kDt);
+    ASSERT_EQ(voices.Voices().size(), 3u);
+    // Ids go loudest first: the sparks (2 hits at 6 m/s) before the dirt (4 at 2 m/s).
+    EXPECT_EQ(voices.Voices()[0].particleType, ParticleTypeId{sparks});
+    EXPECT_EQ(voices.VoiceSound(voices.Voices()[0]).timbre, SoundTimbre::hiss) << "sparks: a bright tick";
+    // The next step, within the merge window: the same three slots, no new voice.
+    voices.Step(first, kDt);
+    EXPECT_EQ(voices.Voices().size(), 3u);
+    EXPECT_EQ(voices.Stats().particleHitVoices, 3u);
+    EXPECT_EQ(voices.Stats().particleHitsMerged, 3u);
+    // After the window, dirt on box 0 again: a new tap (no cooldown).
+    const int windowSteps = static_cast<int>(std::ceil(bench.config.sound.impactMergeWindow / kDt));
+    for (int step = 0; step < windowSteps; ++step)
+    {
+        voices.Step({}, kDt);
+    }
+    voices.Step(std::span(&first[0], 1), kDt);
+    EXPECT_EQ(voices.Stats().particleHitVoices, 4u);
+}
+
+TEST(ParticleHitVoices, ShareTheCapWithTheOtherVoicesLoudestFirst)
+{
+    const int count = 300;
+    EventBench bench(count);
+    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
+    SoundVoices voices(bench.config);
+    std::vector<EffectEvent> events;
+    for (int box = 0; box < count; ++box)
+    {
+        events.push_back(Hits(bench, box, dirt, 1 + static_cast<std::uint32_t>(box % 7), 3.0f));
+    }
+    events.push_back(bench.Impact(0, 1, 0.99f)); // louder than any tap
+    voices.Step(events, kDt);
+    const std::uint32_t cap = bench.config.sound.maxVoices;
+    ASSERT_EQ(voices.Voices().size(), cap);
+    int impacts = 0;
+    for (const SoundVoice& voice : voices.Voices())
+    {
+        impacts += voice.kind == VoiceKind::impact ? 1 : 0;
+        if (voice.kind == VoiceKind::particleHits)
+        {
+            EXPECT_FLOAT_EQ(voice.loudness,
+                            1.0f - std::exp(-bench.config.sound.particleHitGain * 3.0f * std::sqrt(7.0f)))
+                << "only the loudest taps (7 hits) sound";
+        }
+    }
+    EXPECT_EQ(impacts, 1);
+    EXPECT_EQ(voices.Stats().particleHitsOverCap, static_cast<std::uint64_t>(count) - (cap - 1));
+}
+
+TEST(ParticleHitVoices, TheTutorialScenePattersAndTicksWithinTheCap)
+{
+    const SceneEntry& entry = *FindScene("tutorial");
+    Simulation simulation(SceneSimulationDef(entry, std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes"));
+    SoundVoices voices(simulation.GetEffects().Config());
+    std::uint64_t groups = 0, hits = 0;
+    std::uint32_t mostGroups = 0;
+    const int steps = static_cast<int>(20.0f / simulation.Dt());
+    for (int step = 0; step < steps; ++step)
+    {
+        StepScene(entry, simulation);
+        std::uint32_t stepGroups = 0;
+        for (const EffectEvent& event : simulation.GetEffects().Events())
+        {
+            if (event.type == EffectEventType::particleHits)
+            {
+                ++stepGroups;
+                hits += event.count;
+            }
+        }
+        groups += stepGroups;
+        mostGroups = std::max(mostGroups, stepGroups);
+        voices.Step(simulation.GetEffects().Events(), simulation.Dt());
+        ASSERT_LE(voices.Voices().size(), simulation.GetEffects().Config().sound.maxVoices);
+    }
+    std::printf(
+        "tutorial, 20 s: %llu particle hit groups (%llu hits; at most %u groups a step), %llu particle "
+        "hit voices, %llu merged, %llu over the cap\n",
+        static_cast<unsigned long long>(groups), static_cast<unsigned long long>(hits), mostGroups,
+        static_cast<unsigned long long>(voices.Stats().particleHitVoices),
+        static_cast<unsigned long long>(voices.Stats().particleHitsMerged),
+        static_cast<unsigned long long>(voices.Stats().particleHitsOverCap));
+    EXPECT_GT(groups, 0u);
+    EXPECT_LE(mostGroups, simulation.GetEffects().Config().budget.particleHits);
+    EXPECT_GT(voices.Stats().particleHitVoices, 0u);
+}
+
+} // namespace cfx::test
