@@ -33,6 +33,11 @@ double Brightness(const std::vector<std::int16_t>& samples, double from, double 
 {
     const auto first = static_cast<std::size_t>(std::llround(from * kRate));
     const auto last = static_cast<std::size_t>(std::llround(to * kRate));
+    if (last > samples.size())
+    {
+        ADD_FAILURE() << "Brightness up to " << to << " s of " << samples.size() << " samples";
+        return 0.0;
+    }
     double change = 0.0;
     double level = 0.0;
     for (std::size_t i = first + 1; i < last; ++i)
@@ -62,9 +67,9 @@ std::vector<std::int16_t> Hold(const EffectsConfig& config, SoundVoice voice, do
 {
     SoundSynth synth(config, 7);
     std::vector<std::int16_t> samples;
-    for (int step = 1; static_cast<double>(step) * kDt <= total + 1e-9; ++step)
+    for (int step = 1; static_cast<float>(step) * kDt <= total + 1e-9; ++step)
     {
-        const double time = static_cast<double>(step) * kDt;
+        const double time = static_cast<float>(step) * kDt; // in float, as the effects step time adds up
         std::vector<SoundVoice> voices;
         if (time >= voice.startTime - 1e-9 && time < voice.startTime + seconds)
         {

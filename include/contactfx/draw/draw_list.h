@@ -145,7 +145,7 @@ enum class ShapePass : std::uint8_t
 class ShapeRecorder final : public b2Draw
 {
 public:
-    /// Records into `list` with `style`; both must outlive the recorder.
+    /// Records into `list` (which must outlive the recorder) with a copy of `style`.
     ShapeRecorder(DrawList& list, const DrawStyle& style);
 
     /// How the following solid shapes are recorded; starts as `solid`.
@@ -169,7 +169,7 @@ private:
     void Solid(ShapeCommand& shape, const b2Color& color) const;
 
     DrawList& m_list;
-    const DrawStyle& m_style;
+    DrawStyle m_style; // a copy: a temporary style given to the constructor stays valid
     ShapePass m_pass = ShapePass::solid;
 };
 
