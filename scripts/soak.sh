@@ -63,6 +63,7 @@ scrapes() {
       step = $2; sub(/^"step":/, "", step)
       id = $4;   sub(/^"id":/, "", id)
       if (type == "impact") { impacts++; next }
+      if (type == "particle_hits") { hits++; next }
       if (type == "scrape_began") {
         if (id in began) { printf "soak: %s:%d: scrape %s began twice\n", file, NR, id; bad++ }
         began[id] = 1; begun++
@@ -81,8 +82,8 @@ scrapes() {
         printf "soak: scrape %s began and never ended (last reported at step %s of %d)\n", id, last[id], last_step + 1
         lost++
       }
-      printf "soak: scrapes: %d began, %d ended, %d still going at the last step, %d lost; %d impacts\n",
-        begun, finished, going, lost, impacts
+      printf "soak: scrapes: %d began, %d ended, %d still going at the last step, %d lost; %d impacts, %d particle hit groups\n",
+        begun, finished, going, lost, impacts, hits
       exit (bad + lost > 0)
     }' "$1"
 }
