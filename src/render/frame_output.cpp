@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -211,6 +212,33 @@ void PngSequenceSink::Write(const CairoRenderer& frame)
     ++m_next;
 }
 
+ProgramResult RunProgram(const std::filesystem::path& program, const std::vector<std::string>& arguments)
+{
+    std::string command = ShellQuote(program.string());
+    for (const std::string& argument : arguments)
+    {
+        command += " " + ShellQuote(argument);
+    }
+    command += " 2>&1";
+    ProgramResult result;
+    std::FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr)
+    {
+        return result;
+    }
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    {
+        result.output.append(buffer, n);
+    }
+    const int status = ::pclose(pipe);
+    if (status != -1 && WIFEXITED(status))
+    {
+        result.status = WEXITSTATUS(status);
+    }
+    return result;
+}
+
 VideoProbe ProbeVideo(const std::filesystem::path& file)
 {
     const std::filesystem::path ffprobe = FindProgram("ffprobe");
@@ -219,24 +247,16 @@ VideoProbe ProbeVideo(const std::filesystem::path& file)
         throw std::runtime_error("ffprobe not found: install ffmpeg (with ffprobe) to write .mp4/.gif");
     }
     // Counting packets reads the whole file without decoding it: a cut-off video has fewer.
-    const std::string command = ShellQuote(ffprobe.string()) +
-                                " -v error -count_packets -select_streams v:0 -show_entries "
-                                "stream=nb_read_packets:format=duration -of default=noprint_wrappers=1 " +
-                                ShellQuote(file.string()) + " 2>&1";
+    const ProgramResult run = RunProgram(ffprobe, {"-v", "error", "-count_packets", "-select_streams", "v:0",
+                                                   "-show_entries", "stream=nb_read_packets:format=duration",
+                                                   "-of", "default=noprint_wrappers=1", file.string()});
     VideoProbe probe;
-    std::FILE* pipe = ::popen(command.c_str(), "r");
-    if (pipe == nullptr)
-    {
-        probe.message = "cannot start ffprobe";
-        return probe;
-    }
     bool haveFrames = false;
     bool haveSeconds = false;
-    char line[512];
-    while (std::fgets(line, sizeof line, pipe) != nullptr)
+    std::istringstream lines(run.output);
+    for (std::string text; std::getline(lines, text);)
     {
-        std::string text = line;
-        while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
+        while (!text.empty() && text.back() == '\r')
         {
             text.pop_back();
         }
@@ -256,11 +276,10 @@ VideoProbe ProbeVideo(const std::filesystem::path& file)
             probe.message = text;
         }
     }
-    const int status = ::pclose(pipe);
-    probe.ok = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && haveFrames && haveSeconds;
+    probe.ok = run.status == 0 && haveFrames && haveSeconds;
     if (!probe.ok && probe.message.empty())
     {
-        probe.message = "no video stream or duration found";
+        probe.message = run.status == -1 ? "cannot start ffprobe" : "no video stream or duration found";
     }
     return probe;
 }

@@ -38,6 +38,16 @@ std::filesystem::path SequenceFile(const std::filesystem::path& pattern, long lo
 /// The full path of `program` on $PATH, or an empty path when it is not there (or not executable).
 std::filesystem::path FindProgram(const std::string& program);
 
+/// What a program run by RunProgram did.
+struct ProgramResult
+{
+    int status = -1;    ///< exit status; -1 when it could not start or was killed
+    std::string output; ///< standard output and standard error together
+};
+/// Runs `program` (a path, e.g. from FindProgram) with `arguments`, each passed as one word (quoted for
+/// the shell), and collects what it prints. Blocks until it exits.
+ProgramResult RunProgram(const std::filesystem::path& program, const std::vector<std::string>& arguments);
+
 /// Receives frames one after another. Finish() completes the output; destroying a sink that was not
 /// finished removes everything it wrote.
 class FrameSink
