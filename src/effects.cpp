@@ -125,7 +125,8 @@ struct Effects::Internals
     Internals(b2World& world, const RuleTable& rules, const EffectsConfig& config, const EffectsDef& def,
               ParticleSystem& particles)
         : claim(world), tracker(rules, materials),
-          destruction(materials, tracker, particles, def.destructionListener), emitter(config, def.seed),
+          destruction(materials, tracker, particles, def.destructionListener),
+          emitter(config, def.seed, def.particles.checkParticles),
           events(materials, config.budget.contacts, config.budget.particleHits)
     {
         tracker.SetForward(def.contactListener);

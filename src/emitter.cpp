@@ -95,7 +95,8 @@ struct Emitter::RuleContext
     float dt;
 };
 
-Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed) : m_random(seed)
+Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStarts)
+    : m_random(seed), m_auditStarts(auditStarts)
 {
     for (const RuleDef& rule : config.rules)
     {
@@ -452,8 +453,9 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         context.stats.spawnRejected += static_cast<std::uint64_t>(count);
         return;
     }
-    // A check of its own on the particle's actual disc: stays 0 while the placements keep their promise.
-    if (!DiscIsClear(context.world, start.position, type.radius, &context.particleBodies))
+    // The audit: Box2D's own overlap test on the particle's actual disc, not the placement's search.
+    if (m_auditStarts &&
+        DiscOverlapsSolid(context.world, start.position, type.radius, &context.particleBodies))
     {
         context.stats.spawnedInsideSolid += static_cast<std::uint64_t>(count);
     }

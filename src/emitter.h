@@ -54,8 +54,10 @@ namespace cfx::detail
 class Emitter
 {
 public:
-    /// `config` must be valid (Validate) and is the one Emit will be given.
-    Emitter(const EffectsConfig& config, std::uint64_t seed);
+    /// `config` must be valid (Validate) and is the one Emit will be given. `auditStarts`: check every
+    /// start with DiscOverlapsSolid and count those inside in EffectsStats::spawnedInsideSolid (a world
+    /// query per spawn: with ParticleSystemOptions::checkParticles only).
+    Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStarts = false);
 
     /// For every body pair of every rule: emits into `particles`, reports to `events` (after its
     /// BeginStep for this step), updates `stats`.
@@ -104,6 +106,7 @@ private:
                         float intensity, int count);
 
     Random m_random;
+    bool m_auditStarts;
     std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
     std::uint64_t m_stamp = 0;               // one per rule per Emit
     std::vector<PairStep> m_pairSteps;       // by pair slot

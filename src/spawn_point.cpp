@@ -239,6 +239,52 @@ bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFi
     return !query.Inside();
 }
 
+bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
+{
+    static constexpr float kTouching = 1.0e-5f; // m
+    class Overlaps final : public b2QueryCallback
+    {
+    public:
+        Overlaps(b2Vec2 center, float radius, const BodyFilter* ignore) : m_ignore(ignore)
+        {
+            // b2TestOverlap counts a distance under 10 * b2_epsilon (1.2e-6 m) as overlap: a disc just
+            // touching a surface would be inside. Overlap means deeper than kTouching.
+            m_disc.m_p = center;
+            m_disc.m_radius = radius - std::min(kTouching, 0.5f * radius);
+            box.lowerBound = center - b2Vec2(radius, radius);
+            box.upperBound = center + b2Vec2(radius, radius);
+        }
+        bool ReportFixture(b2Fixture* fixture) override
+        {
+            if (fixture->IsSensor() || (m_ignore != nullptr && m_ignore->Ignore(fixture->GetBody())))
+            {
+                return true;
+            }
+            const b2Shape* shape = fixture->GetShape();
+            for (int child = 0; child < shape->GetChildCount(); ++child)
+            {
+                if (b2TestOverlap(fixture->GetAABB(child), box) &&
+                    b2TestOverlap(shape, child, &m_disc, 0, fixture->GetBody()->GetTransform(), m_identity))
+                {
+                    found = true;
+                    return false;
+                }
+            }
+            return true;
+        }
+        b2AABB box;
+        bool found = false;
+
+    private:
+        const BodyFilter* m_ignore;
+        b2CircleShape m_disc;
+        b2Transform m_identity{b2Vec2(0.0f, 0.0f), b2Rot(0.0f)};
+    };
+    Overlaps query(center, radius, ignore);
+    world.QueryAABB(&query, query.box);
+    return query.found;
+}
+
 SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
 {
     b2Vec2 tangent(-query.normal.y, query.normal.x);

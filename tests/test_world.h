@@ -72,6 +72,10 @@ struct TestWorld
         }
     }
 
+    /// The effects' particle system options Attach uses: tests that expect spawnedInsideSolid or the
+    /// particle check's counters to be 0 turn checkParticles on, or those counters are not counted.
+    ParticleSystemOptions particles{};
+
     /// Creates the effects object with `config` (default preset when omitted).
     Effects& Attach(EffectsConfig config = DefaultPreset(), std::uint64_t seed = 1,
                     b2ContactListener* listener = nullptr)
@@ -80,6 +84,7 @@ struct TestWorld
         def.config = std::move(config);
         def.seed = seed;
         def.contactListener = listener;
+        def.particles = particles;
         effects = std::make_unique<Effects>(*world, def);
         return *effects;
     }

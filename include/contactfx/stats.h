@@ -28,8 +28,12 @@ struct EffectsStats
     std::vector<RuleStats> rules;             ///< per rule
     std::uint32_t live = 0;
     std::uint32_t liveMax = 0;
-    std::uint64_t spawnedInsideSolid = 0; ///< particles whose start point was inside a solid fixture
-    std::uint64_t recycled = 0;           ///< live particles replaced because the pool was full
+    /// With ParticleSystemOptions::checkParticles (EffectsDef::particles) only, else 0: particles whose
+    /// start disc overlapped a solid fixture by Box2D's own b2TestOverlap, an audit independent of the
+    /// placement's search (which never starts a particle inside; spawnRejected counts those it could not
+    /// place). Costs a world query per spawn, so it is off by default.
+    std::uint64_t spawnedInsideSolid = 0;
+    std::uint64_t recycled = 0; ///< live particles replaced because the pool was full
     /// Pool particles squeezed by a moving body against other geometry with no free place: they died
     /// (ParticleCounters::crushed).
     std::uint64_t crushed = 0;

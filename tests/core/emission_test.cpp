@@ -128,6 +128,7 @@ TEST(Emission, RubberSpinningOnConcreteGivesSmoke)
     TestWorld scene;
     b2Body* ground = scene.CreateGround();
     b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach();
     fx.SetMaterial(ground, fx.FindMaterial("concrete"));
     fx.SetMaterial(wheel, fx.FindMaterial("rubber"));

@@ -85,6 +85,7 @@ PileResult DropPile(EffectsConfig config, float hz, float seconds, bool checkSta
         const float y = 19.0f + 0.6f * static_cast<float>(row) - 0.35f * static_cast<float>(column);
         boxes.push_back(scene.CreateBox(b2Vec2(x, y), 0.18f, 0.18f, 0.5f));
     }
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach(std::move(config));
     const float radius = fx.Config().particleTypes[fx.Config().FindParticleType("sparks").index].radius;
     for (b2Body* body : {floor, ramp, wall})
@@ -140,6 +141,7 @@ PileResult Crevice(float hz)
     StaticBox(*scene.world, b2Vec2(-0.5f - 2.0f * gap - 2.0f, 0.5f + gap), 2.0f, 0.5f);  // left wall
     StaticBox(*scene.world, b2Vec2(0.5f + 2.0f * gap + 2.0f, 0.5f + gap), 2.0f, 0.5f);   // right wall
     StaticBox(*scene.world, b2Vec2(0.0f, 0.5f + 2.0f * gap + 0.02f + 0.5f), 0.6f, 0.5f); // ceiling
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach();
     fx.SetMaterial(slab, fx.FindMaterial("concrete"));
     fx.SetMaterial(block, fx.FindMaterial("steel"));

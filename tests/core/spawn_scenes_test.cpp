@@ -51,6 +51,7 @@ TEST(SpawnScenes, NoParticleStartsInsideInAnyScene)
                     def.config = TutorialPreset();
                 }
                 def.hz = hz;
+                def.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
                 Simulation simulation(def);
                 const int steps = static_cast<int>(std::lround(8.0f * hz));
                 for (int i = 0; i < steps; ++i)

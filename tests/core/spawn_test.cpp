@@ -66,6 +66,7 @@ bool InsideOrBehind(const b2Fixture* fixture, b2Vec2 point)
 void ExpectSpawnsOutside(TestWorld& scene, b2Body* surface, b2Body* mover, b2Vec2 velocity,
                          float angularVelocity = 0.0f)
 {
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach(StillParticles());
     const float radius = fx.Config().particleTypes[fx.Config().FindParticleType("sparks").index].radius;
     fx.SetMaterial(surface, fx.FindMaterial("concrete"));
@@ -222,6 +223,33 @@ TEST(Spawn, InsideMeansTheDiscOverlapsOrIsBehindAOneSidedEdge)
     EXPECT_TRUE(DiscIsClear(*scene.world, b2Vec2(8.0f, -8.06f), 0.01f, nullptr));
 }
 
+// The start audit (EffectsStats::spawnedInsideSolid) is Box2D's own overlap test, skins included, and
+// skips sensors and ignored bodies.
+TEST(Spawn, AuditFindsDiscsOverlappingSolidsByBox2DsOwnTest)
+{
+    TestWorld scene;
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f, b2_staticBody);
+    EXPECT_TRUE(DiscOverlapsSolid(*scene.world, b2Vec2(0.0f, 0.5f), 0.01f, nullptr)) << "centre inside";
+    EXPECT_TRUE(DiscOverlapsSolid(*scene.world, b2Vec2(0.509f, 0.5f), 0.01f, nullptr)) << "rim in the core";
+    EXPECT_TRUE(DiscOverlapsSolid(*scene.world, b2Vec2(0.5145f, 0.5f), 0.01f, nullptr)) << "rim in the skin";
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(0.53f, 0.5f), 0.01f, nullptr));
+    // Touching is not overlapping: the disc's rim 1 micrometre off the skin, or 5 micrometres into it.
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(0.520001f, 0.5f), 0.01f, nullptr));
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(0.519995f, 0.5f), 0.01f, nullptr));
+    EXPECT_TRUE(DiscOverlapsSolid(*scene.world, b2Vec2(0.51998f, 0.5f), 0.01f, nullptr));
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(3.0f, 3.0f), 0.01f, nullptr));
+
+    struct IgnoreBody final : BodyFilter
+    {
+        const b2Body* body;
+        bool Ignore(const b2Body* candidate) const override { return candidate == body; }
+    } ignoreBox;
+    ignoreBox.body = box;
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(0.0f, 0.5f), 0.01f, &ignoreBox));
+    box->GetFixtureList()->SetSensor(true);
+    EXPECT_FALSE(DiscOverlapsSolid(*scene.world, b2Vec2(0.0f, 0.5f), 0.01f, nullptr)) << "a sensor";
+}
+
 TEST(Spawn, BehindAChainIsDecidedAtItsCornersToo)
 {
     // A chain with a peak at (0, 1) and a valley at (4, 0), front up (listed right to left).
@@ -271,6 +299,7 @@ TEST(Spawn, TutorialPresetDropsNothingInsideTheWheelOrTheBox)
     b2Body* ground = scene.CreateGround();
     b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
     b2Body* box = scene.CreateBox(b2Vec2(-10.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach(TutorialPreset());
     fx.SetMaterial(ground, fx.FindMaterial("concrete"));
     fx.SetMaterial(wheel, fx.FindMaterial("rubber"));

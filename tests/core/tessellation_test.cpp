@@ -74,6 +74,7 @@ SlideResult Slide(EffectsConfig config, Ground ground, const SlideSetup& setup,
     b2Body* block = scene.CreateBox(b2Vec2(-20.0f, 0.25f + setup.dropHeight), 0.5f, 0.25f, 0.5f);
     block->GetFixtureList()->SetDensity(setup.density);
     block->ResetMassData();
+    scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
     Effects& fx = scene.Attach(std::move(config));
     fx.SetMaterial(floor, fx.FindMaterial("concrete"));
     fx.SetMaterial(block, fx.FindMaterial("steel"));

@@ -21,9 +21,11 @@ std::uint64_t SpawnedOf(const Effects& effects, const char* type)
 
 struct DrivenRun
 {
-    explicit DrivenRun(EffectsConfig config, float seconds = 20.0f, float hz = 60.0f, std::uint64_t seed = 1)
+    explicit DrivenRun(EffectsConfig config, float seconds = 20.0f, float hz = 60.0f, std::uint64_t seed = 1,
+                       bool checkParticles = false)
     {
         SimulationDef def;
+        def.particles.checkParticles = checkParticles;
         def.scene = kTutorialScene;
         def.config = std::move(config);
         def.hz = hz;
@@ -60,7 +62,7 @@ TEST(TutorialScene, EveryFixtureGetsItsMaterial)
 
 TEST(TutorialScene, ScriptedDriveMakesSparksSmokeAndDirtAllOutsideSolids)
 {
-    DrivenRun run(DefaultPreset());
+    DrivenRun run(DefaultPreset(), 20.0f, 60.0f, 1, true); // the check audits every start
     const Effects& effects = run.simulation->GetEffects();
     EXPECT_GT(SpawnedOf(effects, "sparks"), 20u);
     EXPECT_GT(SpawnedOf(effects, "smoke"), 20u);
