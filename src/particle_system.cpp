@@ -53,7 +53,7 @@ constexpr float kRestSpeed = 0.5f;
 
 constexpr unsigned kMaxThreads = 8;
 // Runs a split step is cut into, per thread and at most (see StepJob).
-constexpr std::uint32_t kRunsPerThread = 8;
+constexpr std::uint32_t kRunsPerThread = 16;
 constexpr std::uint32_t kMaxRuns = kRunsPerThread * kMaxThreads;
 
 // What scales minParticlesPerThread for a step without collision. Such a step costs about a sixth as much

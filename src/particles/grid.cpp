@@ -13,6 +13,7 @@ namespace
 
 constexpr float kMinCell = 1.0f / 64.0f; // m
 constexpr std::size_t kMinCells = 1024;
+constexpr std::size_t kMaxCells = std::size_t{1} << 24;
 constexpr std::size_t kCellsPerBox = 16;
 constexpr float kCellPerExtent = 1.0f;
 
@@ -36,6 +37,8 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     m_items.clear();
     m_columns = 0;
     m_rows = 0;
+    m_lastColumn = 0.0f;
+    m_lastRow = 0.0f;
     if (boxes.empty())
     {
         m_cellStart.assign(1, 0);
@@ -58,7 +61,8 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         cell = std::min(cell, std::sqrt(size.x * size.y / static_cast<float>(kMinCells)));
     }
     cell = std::max(cell, kMinCell);
-    const std::size_t maxCells = std::max(kMinCells, kCellsPerBox * boxes.size());
+    // At most 2^24 cells, so that every column and row index is exact as a float (Clamped).
+    const std::size_t maxCells = std::min(std::max(kMinCells, kCellsPerBox * boxes.size()), kMaxCells);
     m_lower = bounds.lowerBound;
     m_upper = bounds.upperBound;
     const int spread = Spread();
@@ -80,6 +84,8 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         {
             m_columns = static_cast<int>(columns);
             m_rows = static_cast<int>(rows);
+            m_lastColumn = static_cast<float>(m_columns - 1);
+            m_lastRow = static_cast<float>(m_rows - 1);
             m_cellSize = cell;
             m_inverseCell = 1.0f / cell;
             if (maxItemsPerBox == 0 || CountItems(boxes) <= maxItems)

@@ -97,7 +97,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
     }
     // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
-    return geometry.MovingOverlap(position, side) <= 0.5f * side.radius;
+    return !geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius);
 }
 
 // What a particle's mark says of its motion against the static geometry this step.

@@ -154,9 +154,11 @@ public:
     static constexpr float kMaxTurn = 0.1f;
     /// Pieces a moving sweep is cut into at most (a turn of 6.4 rad a step: 60 rad/s at 10 Hz).
     static constexpr int kMaxPieces = 64;
-    /// How deep (m, >= 0) the disc at `point` overlaps the moving fixtures its filter accepts, where they
-    /// are at the end of the step: the deepest overlap, 0 when it overlaps none.
-    float MovingOverlap(b2Vec2 point, const ParticleSide& side) const;
+    /// Whether the disc at `point` overlaps a moving fixture its filter accepts, where they are at the end
+    /// of the step, by more than `depth` (m, >= 0): the deepest overlap (as the sweeps measure it, from
+    /// polygons' cores) exceeds it. A polygon whose nearest edge line lies clearly more than r - depth
+    /// from `point` is passed over without measuring (most pushed particles sit on a surface).
+    bool MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const;
 
     /// A box holding all moving geometry (an empty box when there is none): a disc whose path box
     /// misses it meets no moving shape, and SweepMoving would find nothing.
