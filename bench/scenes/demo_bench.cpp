@@ -5,6 +5,7 @@
 #include "contactfx/scene/rube.h"
 #include "harness/car.h"
 #include "harness/simulation.h"
+#include "scenes/timing.h"
 
 #include <algorithm>
 #include <box2d/b2_world.h>
@@ -20,18 +21,6 @@ namespace
 {
 
 using Clock = std::chrono::steady_clock;
-
-void Summarize(std::vector<double>& values, double& minOut, double& medianOut)
-{
-    std::sort(values.begin(), values.end());
-    minOut = values.empty() ? 0.0 : values.front();
-    medianOut = values.empty() ? 0.0 : values[values.size() / 2];
-}
-
-double Milliseconds(Clock::duration duration)
-{
-    return std::chrono::duration<double, std::milli>(duration).count();
-}
 
 } // namespace
 

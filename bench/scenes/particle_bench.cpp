@@ -2,6 +2,7 @@
 #include "scenes/particle_bench.h"
 
 #include "particle_system_access.h"
+#include "scenes/timing.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
@@ -49,19 +50,6 @@ double HeapInUse()
     const struct mallinfo2 info = mallinfo2();
     return static_cast<double>(info.uordblks) + static_cast<double>(info.hblkhd);
 #endif
-}
-
-double Milliseconds(std::chrono::steady_clock::duration duration)
-{
-    return std::chrono::duration<double, std::milli>(duration).count();
-}
-
-// The least and the median of `values` (sorted in place); 0 when empty.
-void Summarize(std::vector<double>& values, double& minOut, double& medianOut)
-{
-    std::sort(values.begin(), values.end());
-    minOut = values.empty() ? 0.0 : values.front();
-    medianOut = values.empty() ? 0.0 : values[values.size() / 2];
 }
 
 } // namespace

@@ -20,7 +20,6 @@ namespace cfx::render
 namespace
 {
 
-constexpr int kMaxSide = 16384;
 constexpr double kTurn = 2.0 * std::numbers::pi;
 
 float Clamp01(float value)
@@ -40,10 +39,10 @@ void SetWorldTransform(cairo_t* cr, const Camera& camera)
 
 CairoRenderer::CairoRenderer(int width, int height) : m_width(width), m_height(height)
 {
-    if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide)
+    if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide)
     {
         throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                                    " outside 1 .. " + std::to_string(kMaxSide) + " pixels");
+                                    " outside 1 .. " + std::to_string(kMaxImageSide) + " pixels");
     }
     m_surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     m_cr = cairo_create(m_surface);

@@ -10,8 +10,6 @@ namespace cfx::render
 namespace
 {
 
-constexpr int kMaxSide = 16384;
-
 cairo_status_t Append(void* closure, const unsigned char* data, unsigned int length)
 {
     static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -22,7 +20,7 @@ cairo_status_t Append(void* closure, const unsigned char* data, unsigned int len
 
 std::string EncodePng(const unsigned char* rows, int width, int height, int stride)
 {
-    if (width < 1 || width > kMaxSide || height < 1 || height > kMaxSide || stride < 4 * width ||
+    if (width < 1 || width > kMaxImageSide || height < 1 || height > kMaxImageSide || stride < 4 * width ||
         stride % 4 != 0 || rows == nullptr)
     {
         throw std::invalid_argument("cannot encode a PNG of " + std::to_string(width) + "x" +

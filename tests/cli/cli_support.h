@@ -4,10 +4,12 @@
 #include "rube_samples_dir.h"
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -92,6 +94,12 @@ inline std::string FileText(const std::filesystem::path& path)
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+/// The particles of `type` a run spawned, from its --stats file.
+inline std::uint64_t Spawned(const std::filesystem::path& stats, const char* type)
+{
+    return nlohmann::json::parse(FileText(stats))["spawned"][type].get<std::uint64_t>();
 }
 
 /// Writes a test input (not atomically: tests only).

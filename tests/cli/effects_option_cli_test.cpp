@@ -23,11 +23,6 @@ std::string SlidingBlock()
             "polygon": {"vertices": {"x": [1, 1, -1, -1], "y": [-0.5, 0.5, 0.5, -0.5]}}}]}]})";
 }
 
-std::uint64_t Spawned(const std::filesystem::path& stats, const char* type)
-{
-    return nlohmann::json::parse(FileText(stats))["spawned"][type].get<std::uint64_t>();
-}
-
 } // namespace
 
 TEST(CliEffects, DemoTakesEffectsLikeItsPreset)

@@ -8,16 +8,6 @@
 namespace cfx::test
 {
 
-namespace
-{
-
-std::uint64_t Spawned(const std::filesystem::path& stats, const char* type)
-{
-    return nlohmann::json::parse(FileText(stats))["spawned"][type].get<std::uint64_t>();
-}
-
-} // namespace
-
 TEST(CliScene, RunSceneDrivesTheRegisteredScene)
 {
     const std::filesystem::path dir = ScratchDir("run_scene_skidpad");

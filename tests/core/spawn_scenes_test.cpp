@@ -2,6 +2,7 @@
 // (the same Simulation and per-step actions the CLI and the testbed use) for a few seconds, with its own
 // effects config and with the tutorial preset, at 30, 60 and 120 Hz, and no particle starts inside a solid.
 #include "harness/scenes.h"
+#include "scenes_dir.h"
 #include "test_world.h"
 
 #include <cmath>
@@ -13,8 +14,6 @@ namespace cfx
 
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 } // namespace
 

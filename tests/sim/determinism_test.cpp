@@ -4,6 +4,7 @@
 // the hash: update the stored value (and say why in the commit) only when the change means to.
 #include "cli/cli_support.h"
 #include "harness/scenes.h"
+#include "scenes_dir.h"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -14,8 +15,6 @@ namespace cfx
 
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 constexpr std::uint64_t kSteps = 1200; // 20 s at 60 Hz: `contactfx demo` as it is
 

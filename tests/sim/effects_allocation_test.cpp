@@ -7,6 +7,7 @@
 #include "harness/scenes.h"
 #include "harness/simulation.h"
 #include "scenes/debris_bench.h"
+#include "scenes_dir.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -16,8 +17,6 @@ namespace cfx::test
 {
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 // Allocations in steps [warmUp, steps) of `step`, each step that allocated printed.
 template <typename Step> long AllocationsAfterWarmUp(int steps, int warmUp, Step&& step)

@@ -1,5 +1,6 @@
 // Simulation::ReplaceEffects (the testbed's live edits) and the step times it reports.
 #include "harness/scenes.h"
+#include "scenes_dir.h"
 
 #include <box2d/b2_body.h>
 #include <gtest/gtest.h>
@@ -9,8 +10,6 @@ namespace cfx
 
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 std::unique_ptr<Simulation> Grinder(float seconds)
 {

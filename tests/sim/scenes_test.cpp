@@ -1,6 +1,7 @@
 // The scene registry: every registered scene loads, gives each fixture its material, and makes the
 // particle types it promises when simulated headless, the same way every time.
 #include "harness/scenes.h"
+#include "scenes_dir.h"
 
 #include <box2d/b2_body.h>
 #include <cmath>
@@ -12,8 +13,6 @@ namespace cfx
 
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 std::unique_ptr<Simulation> Open(const SceneEntry& entry)
 {

@@ -4,6 +4,7 @@
 #include "harness/scenes.h"
 #include "harness/simulation.h"
 #include "sound/sound_test_support.h"
+#include "step_time.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,8 +17,6 @@ namespace cfx::test
 
 namespace
 {
-
-constexpr float kDt = 1.0f / 60.0f;
 
 // The particle hits of `count` particles of `type` on the body of `bench.boxes[box]` at `meanSpeed`.
 EffectEvent Hits(const EventBench& bench, int box, std::uint16_t type, std::uint32_t count, float meanSpeed)

@@ -3,6 +3,7 @@
 // same samples for the same inputs, and the WAV header.
 #include "contactfx/sound_synth.h"
 #include "sound/sound_test_support.h"
+#include "step_time.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -14,7 +15,6 @@ namespace
 {
 
 constexpr double kRate = SoundSynth::kSampleRate;
-constexpr float kDt = 1.0f / 60.0f;
 
 double Rms(const std::vector<std::int16_t>& samples, double from, double to)
 {

@@ -3,6 +3,7 @@
 #include "harness/scenes.h"
 #include "harness/simulation.h"
 #include "sound/sound_test_support.h"
+#include "step_time.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -15,7 +16,6 @@ namespace cfx::test
 namespace
 {
 
-constexpr float kDt = 1.0f / 60.0f;
 using Type = EffectEventType;
 
 const SoundRuleDef kRule{}; // the defaults every rule of the default preset uses

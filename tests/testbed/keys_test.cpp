@@ -1,5 +1,6 @@
 // The testbed's keys without a window: the table, and each action carried out on a session.
 #include "keys.h"
+#include "scenes_dir.h"
 #include "testbed/testbed_support.h"
 
 #define GLFW_INCLUDE_NONE
@@ -14,8 +15,6 @@ namespace cfx::testbed
 
 namespace
 {
-
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 
 struct Keys : ::testing::Test
 {

@@ -3,6 +3,7 @@
 #include "contactfx/scene/effects_json.h"
 #include "effects_editor.h"
 #include "mouse_drag.h"
+#include "scenes_dir.h"
 #include "session.h"
 #include "testbed/testbed_support.h"
 
@@ -17,7 +18,6 @@ namespace cfx::testbed
 namespace
 {
 
-const std::filesystem::path kScenesDir = std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes";
 constexpr int kViewWidth = 890;
 constexpr int kViewHeight = 720;
 

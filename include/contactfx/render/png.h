@@ -15,4 +15,7 @@ namespace cfx::render
 /// Throws std::invalid_argument for a bad size or stride and std::runtime_error when encoding fails.
 std::string EncodePng(const unsigned char* rows, int width, int height, int stride);
 
+/// The largest width or height (pixels) of an image the renderers draw and EncodePng encodes.
+inline constexpr int kMaxImageSide = 16384;
+
 } // namespace cfx::render
