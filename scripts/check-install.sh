@@ -21,6 +21,7 @@ cmake -S "$work/consumer" -B "$work/consumer-build" -G Ninja -DCMAKE_BUILD_TYPE=
 cmake --build "$work/consumer-build" >/dev/null
 "$work/consumer-build/consumer" "$version"
 "$work/consumer-build/consumer_components" "$prefix/share/contactfx/scenes/grinder.json"
+"$work/consumer-build/consumer_render"
 echo "find_package(contactfx): ok"
 
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
@@ -29,8 +30,12 @@ c++ -O1 "$work/consumer/consumer.cpp" -o "$work/consumer-pc" $(pkg-config --cfla
 "$work/consumer-pc" "$version"
 # shellcheck disable=SC2046
 c++ -O1 "$work/consumer/consumer_components.cpp" -o "$work/consumer-components-pc" \
-  $(pkg-config --cflags --libs contactfx-render)
+  $(pkg-config --cflags --libs contactfx-render contactfx-scene)
 "$work/consumer-components-pc" "$prefix/share/contactfx/scenes/grinder.json"
+# The render component alone needs only the core.
+# shellcheck disable=SC2046
+c++ -O1 "$work/consumer/consumer_render.cpp" -o "$work/consumer-render-pc" $(pkg-config --cflags --libs contactfx-render)
+"$work/consumer-render-pc"
 echo "pkg-config: ok"
 
 # The installed programs find the installed scenes wherever the prefix is moved, and name no path of
