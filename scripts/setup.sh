@@ -3,8 +3,8 @@
 # Usage: bash scripts/setup.sh [BUILD_DIR] [--target TARGET]... [extra cmake arguments...]
 #   (as root, or with sudo available). Without --target it builds everything.
 # The build is a unity build (CMake's UNITY_BUILD: a target's sources compiled a batch at a time), which
-# builds everything from scratch in 0.6 of the time on the project's 2-core machine (327 s against 535 s); pass
-# -DCMAKE_UNITY_BUILD=OFF for quicker rebuilds of one changed file while developing.
+# builds everything from scratch in 0.6 of the time on the project's 2-core machine (327 s against 535 s);
+# pass -DCMAKE_UNITY_BUILD=OFF for quicker rebuilds of one changed file while developing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -161,8 +161,8 @@ Report Check(const std::string& file, const Options& options, const EffectsConfi
 
 void PrintJson(const Report& report)
 {
-    using Json = nlohmann::ordered_json;
-    Json line;
+    using OrderedJson = nlohmann::ordered_json;
+    OrderedJson line;
     line["file"] = report.file;
     line["kind"] = report.kind == FileKind::effects ? "effects" : "scene";
     line["ok"] = report.errors.empty();
@@ -173,19 +173,19 @@ void PrintJson(const Report& report)
     line["fixtures_with_material"] = report.fixturesWithMaterial;
     auto list = [](const std::vector<Diagnostic>& problems)
     {
-        Json items = Json::array();
+        OrderedJson items = OrderedJson::array();
         for (const Diagnostic& problem : problems)
         {
-            items.push_back(Json{{"path", problem.path},
-                                 {"message", problem.message},
-                                 {"line", problem.line},
-                                 {"column", problem.column}});
+            items.push_back(OrderedJson{{"path", problem.path},
+                                        {"message", problem.message},
+                                        {"line", problem.line},
+                                        {"column", problem.column}});
         }
         return items;
     };
     line["errors"] = list(report.errors);
     line["warnings"] = list(report.warnings);
-    std::cout << line.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
+    std::cout << line.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) << '\n';
 }
 
 std::string Count(std::size_t n, const char* one, const char* many)

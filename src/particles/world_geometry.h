@@ -156,8 +156,8 @@ public:
     static constexpr int kMaxPieces = 64;
     /// Whether the disc at `point` overlaps a moving fixture its filter accepts, where they are at the end
     /// of the step, by more than `depth` (m, >= 0): the deepest overlap (as the sweeps measure it, from
-    /// polygons' cores) exceeds it. A polygon whose nearest edge line lies clearly more than r - depth
-    /// from `point` is passed over without measuring (most pushed particles sit on a surface).
+    /// polygons' cores) exceeds it. A polygon with `point` clearly more than r - depth in front of one of
+    /// its edges' lines is passed over without measuring (most pushed particles sit on a surface).
     bool MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const;
 
     /// A box holding all moving geometry (an empty box when there is none): a disc whose path box

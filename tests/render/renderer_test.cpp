@@ -106,7 +106,7 @@ b2Color Find(const ShapePalette& palette, const std::string& material)
         }
     }
     ADD_FAILURE() << material << " not in the palette";
-    return b2Color();
+    return b2Color(0.0f, 0.0f, 0.0f, 1.0f); // b2Color() leaves its members uninitialised
 }
 
 } // namespace

@@ -334,7 +334,7 @@ b2Color MaterialColor(const std::string& material)
         }
     }
     ADD_FAILURE() << "no colour for " << material;
-    return b2Color();
+    return b2Color(0.0f, 0.0f, 0.0f, 1.0f); // b2Color() leaves its members uninitialised
 }
 
 // Pixels of the world view on a `material` ground's outline (within 0.1 of its colour without particles)
