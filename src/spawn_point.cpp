@@ -18,6 +18,13 @@ namespace cfx
 namespace
 {
 
+// Whether the spawn tests (the placement's and the audit's) look at `fixture`: solid (not a sensor) and on
+// a body `ignore` does not ignore (null: none ignored).
+bool IsSolidFor(const b2Fixture& fixture, const BodyFilter* ignore)
+{
+    return !fixture.IsSensor() && (ignore == nullptr || !ignore->Ignore(fixture.GetBody()));
+}
+
 // Whether a disc is inside any solid fixture: it overlaps one (skins of polygons and edges included), or
 // its centre is behind the one-sided edge or chain nearest to it. One-sided edges and chains collide on
 // their front (right) side only, so whatever is behind them is inside the solid they bound. Near a vertex
@@ -40,7 +47,7 @@ public:
 
     bool ReportFixture(b2Fixture* fixture) override
     {
-        if (fixture->IsSensor() || (m_ignore != nullptr && m_ignore->Ignore(fixture->GetBody())))
+        if (!IsSolidFor(*fixture, m_ignore))
         {
             return true;
         }
@@ -256,7 +263,7 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
         }
         bool ReportFixture(b2Fixture* fixture) override
         {
-            if (fixture->IsSensor() || (m_ignore != nullptr && m_ignore->Ignore(fixture->GetBody())))
+            if (!IsSolidFor(*fixture, m_ignore))
             {
                 return true;
             }

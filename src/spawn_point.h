@@ -74,8 +74,8 @@ bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFi
 /// An audit of a start, independent of DiscIsClear: whether the disc overlaps a solid (non-sensor)
 /// fixture of a body `ignore` does not ignore by more than 10 micrometres, by Box2D's own overlap test
 /// (b2TestOverlap, skins included, of the disc made 1e-5 m smaller: b2TestOverlap alone calls a disc within
-/// 1.2e-6 m of a surface overlapping), each child of each fixture whose box the disc's box meets. Being behind a one-sided edge or chain is
-/// not looked at (Box2D has no test for it). `ignore` may be null.
+/// 1.2e-6 m of a surface overlapping), each child of each fixture whose box the disc's box meets. Being
+/// behind a one-sided edge or chain is not looked at (Box2D has no test for it). `ignore` may be null.
 bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
 
 } // namespace cfx

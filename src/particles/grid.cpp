@@ -37,8 +37,6 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     m_items.clear();
     m_columns = 0;
     m_rows = 0;
-    m_lastColumn = 0.0f;
-    m_lastRow = 0.0f;
     if (boxes.empty())
     {
         m_cellStart.assign(1, 0);
@@ -84,8 +82,6 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         {
             m_columns = static_cast<int>(columns);
             m_rows = static_cast<int>(rows);
-            m_lastColumn = static_cast<float>(m_columns - 1);
-            m_lastRow = static_cast<float>(m_rows - 1);
             m_cellSize = cell;
             m_inverseCell = 1.0f / cell;
             if (maxItemsPerBox == 0 || CountItems(boxes) <= maxItems)

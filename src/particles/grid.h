@@ -147,12 +147,14 @@ private:
     // Clamped before the conversion, so that far, huge or not-a-number coordinates convert no value an
     // int cannot hold (NaN goes to 0). Two selects the compiler makes a max and a min, without a branch:
     // every particle asks, and which side of a cell it is on is as good as random.
-    int Column(float x) const { return Clamped((x - m_lower.x) * m_inverseCell, m_lastColumn); }
-    int Row(float y) const { return Clamped((y - m_lower.y) * m_inverseCell, m_lastRow); }
-    static int Clamped(float cell, float last)
+    int Column(float x) const { return Clamped((x - m_lower.x) * m_inverseCell, m_columns - 1); }
+    int Row(float y) const { return Clamped((y - m_lower.y) * m_inverseCell, m_rows - 1); }
+    // `last` converts exactly: Build makes at most 2^24 cells.
+    static int Clamped(float cell, int last)
     {
         const float low = cell > 0.0f ? cell : 0.0f;
-        return static_cast<int>(low < last ? low : last);
+        const float high = static_cast<float>(last);
+        return static_cast<int>(low < high ? low : high);
     }
     // Entries a build with the current cells would list.
     std::size_t CountItems(std::span<const b2AABB> boxes) const;
@@ -163,8 +165,6 @@ private:
     float m_inverseCell = 1.0f;
     int m_columns = 0;
     int m_rows = 0;
-    float m_lastColumn = 0.0f; ///< m_columns - 1, as a float (exact: far below 2^24)
-    float m_lastRow = 0.0f;
     Listing m_listing = Listing::overlapped;
     std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1 (1 when empty)
     std::vector<std::uint32_t> m_items;

@@ -176,14 +176,9 @@ bool WorldGeometry::MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side,
                 return;
             }
             const MovingBody& body = m_movingBodies[moving.body];
-            // Where the body is at the end of the step its shape lies within `reach` of
-            // its centre: a disc farther than reach + r from it overlaps nothing of it.
-            const b2Vec2 fromCenter = point - body.center;
-            const float within =
-                moving.reach + r +
-                MovingSlop(std::max(std::max(std::abs(point.x), std::abs(point.y)),
-                                    std::max(std::abs(body.center.x), std::abs(body.center.y))));
-            if (b2Dot(fromCenter, fromCenter) > within * within)
+            // A disc resting at `point` for the whole step that never comes within reach of the body's
+            // centre overlaps nothing of it at the end either.
+            if (!MayMeet(body, moving.reach, point, point, r))
             {
                 return;
             }
