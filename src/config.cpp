@@ -80,12 +80,9 @@ public:
     // An integer within `range` (whose bounds are whole numbers).
     void Integer(const std::string& path, std::uint32_t value, const FieldRange& range)
     {
-        const auto min = static_cast<long long>(range.min);
-        const auto max = static_cast<long long>(range.max);
-        if (value < min || value > max)
+        if (value < static_cast<long long>(range.min) || value > static_cast<long long>(range.max))
         {
-            Fail(path, "expected a number in [" + std::to_string(min) + ", " + std::to_string(max) +
-                           "], found " + std::to_string(value));
+            Fail(path, "expected " + ExpectedInteger(range) + ", found " + std::to_string(value));
         }
     }
     void Enum(const std::string& path, int value, int count)
@@ -124,13 +121,16 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
         }
         break;
     case TextRule::material:
-        if (!config.FindMaterial(text).IsValid())
+    case TextRule::particleType:
+        if (text.empty()) // not set: never a match, even for a nameless entry (itself an error)
+        {
+            check.Fail(path, "expected " + std::string(ExpectedText(rule)) + ", found \"\"");
+        }
+        else if (rule == TextRule::material && !config.FindMaterial(text).IsValid())
         {
             check.Fail(path, "unknown material \"" + text + "\"");
         }
-        break;
-    case TextRule::particleType:
-        if (!config.FindParticleType(text).IsValid())
+        else if (rule == TextRule::particleType && !config.FindParticleType(text).IsValid())
         {
             check.Fail(path, "unknown particle type \"" + text + "\"");
         }
@@ -219,14 +219,23 @@ void CheckFields(Checker& check, const std::string& at, const S& value, std::spa
 // Unordered material pairs seen so far in a list (rules, sound rules).
 using MaterialPairs = std::set<std::pair<std::string_view, std::string_view>>;
 
-// "A+B" (sorted) when `seen` already has the unordered pair {a, b}, else "" (and the pair is added).
+// The unordered pair {a, b} as the key of MaterialPairs.
+std::pair<std::string_view, std::string_view> Unordered(std::string_view a, std::string_view b)
+{
+    return b < a ? std::pair(b, a) : std::pair(a, b);
+}
+
+// "A+B" (sorted).
+std::string PairName(std::string_view a, std::string_view b)
+{
+    const auto [first, second] = Unordered(a, b);
+    return std::string(first) + "+" + std::string(second);
+}
+
+// PairName(a, b) when `seen` already has the unordered pair {a, b}, else "" (and the pair is added).
 std::string RepeatedPair(MaterialPairs& seen, std::string_view a, std::string_view b)
 {
-    if (b < a)
-    {
-        std::swap(a, b);
-    }
-    return seen.insert({a, b}).second ? std::string() : std::string(a) + "+" + std::string(b);
+    return seen.insert(Unordered(a, b)).second ? std::string() : PairName(a, b);
 }
 
 } // namespace
@@ -309,6 +318,15 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         if (const std::string pair = RepeatedPair(soundPairs, rule.materialA, rule.materialB); !pair.empty())
         {
             check.Fail(at, "a second sound rule for the pair " + pair);
+        }
+        // Sound rules only tune the voices of a pair rule's events (docs/sound.md): without one, a typo in
+        // a material name would silently do nothing. Unknown materials are reported above.
+        else if (config.FindMaterial(rule.materialA).IsValid() &&
+                 config.FindMaterial(rule.materialB).IsValid() &&
+                 !pairs.contains(Unordered(rule.materialA, rule.materialB)))
+        {
+            check.Fail(at, "no rule for the pair " + PairName(rule.materialA, rule.materialB) +
+                               " in \"rules\": this sound rule would never apply");
         }
     }
     return out;

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace cfx
 {
@@ -17,6 +18,30 @@ bool FieldRange::Contains(float value) const
 {
     const bool aboveMin = minExclusive ? value > min : value >= min;
     return std::isfinite(value) && aboveMin && value <= max;
+}
+
+std::string ExpectedInteger(const FieldRange& range)
+{
+    return "a number in [" + std::to_string(static_cast<long long>(range.min)) + ", " +
+           std::to_string(static_cast<long long>(range.max)) + "]";
+}
+
+std::string_view ExpectedText(TextRule rule)
+{
+    switch (rule)
+    {
+    case TextRule::any:
+        return "a string";
+    case TextRule::name:
+        return "a non-empty name";
+    case TextRule::pattern:
+        return "a non-empty pattern";
+    case TextRule::material:
+        return "a material name";
+    case TextRule::particleType:
+        return "a particle type name";
+    }
+    return "a string";
 }
 
 namespace

@@ -4,6 +4,10 @@
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -13,16 +17,21 @@ namespace cfx::cli
 
 void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
 {
-    command.add_option("--seconds", options.seconds, "Simulated time in seconds, (0, 86400]")
+    command
+        .add_option("--seconds", options.seconds,
+                    "Simulated time in seconds, (0, 86400]; at least one step: 0.5 / --hz or more")
         ->capture_default_str();
     command.add_option("--hz", options.hz, "Steps per second, [1, 10000]")->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of every random choice, 0 .. 2^64-1")
         ->check(CLI::Validator(
             [](std::string& text)
             {
-                const bool digits =
-                    !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-                return digits ? std::string() : "expected a whole number from 0 to 2^64-1, found " + text;
+                // Digits only (no sign, no spaces) and at most 2^64-1, where CLI11 alone would saturate.
+                std::uint64_t value = 0;
+                const char* end = text.data() + text.size();
+                const auto [stop, error] = std::from_chars(text.data(), end, value);
+                const bool whole = error == std::errc() && stop == end;
+                return whole ? std::string() : "expected a whole number from 0 to 2^64-1, found " + text;
             },
             "UINT64"))
         ->capture_default_str();
@@ -61,12 +70,43 @@ void CheckRunOptions(const RunOptions& options)
     if (!std::isfinite(options.seconds) || options.seconds <= 0.0 || options.seconds > 86400.0)
     {
         throw InputError("<command line>", "--seconds",
-                         "expected a number in (0, 86400], found " + std::to_string(options.seconds));
+                         "expected a number in (0, 86400], found " + NumberText(options.seconds));
     }
     if (!std::isfinite(options.hz) || options.hz < 1.0 || options.hz > 10000.0)
     {
         throw InputError("<command line>", "--hz",
-                         "expected a number in [1, 10000], found " + std::to_string(options.hz));
+                         "expected a number in [1, 10000], found " + NumberText(options.hz));
+    }
+    // The run makes round(seconds * hz) steps: less than half a step would be none at all.
+    if (std::llround(options.seconds * options.hz) < 1)
+    {
+        throw InputError("<command line>", "--seconds",
+                         NumberText(options.seconds) + " s at --hz " + NumberText(options.hz) +
+                             " is less than half a step (" + NumberText(1.0 / options.hz) +
+                             " s), so nothing would be simulated: give --seconds " +
+                             NumberText(0.5 / options.hz) + " or more, or a higher --hz");
+    }
+}
+
+std::string NumberText(double value)
+{
+    std::array<char, 64> text{};
+    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
+}
+
+void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension)
+{
+    if (file.empty())
+    {
+        return;
+    }
+    std::string found = std::filesystem::path(file).extension().string();
+    std::transform(found.begin(), found.end(), found.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (found != extension)
+    {
+        throw InputError("<command line>", flag, "expected a " + extension + " file, found \"" + file + "\"");
     }
 }
 

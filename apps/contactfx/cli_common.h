@@ -50,8 +50,17 @@ bool EffectsChosen(const RunOptions& options);
 /// ("contactfx: FILE: PATH: warning: ..."): a run goes on, but the author sees what was ignored.
 void PrintSceneWarnings(const Scene& scene);
 
-/// Checks ranges CLI11 cannot (NaN, infinities); throws InputError naming the flag.
+/// Checks ranges CLI11 cannot (NaN, infinities), and that --seconds at --hz makes at least one step
+/// (round(seconds * hz) >= 1); throws InputError naming the flag.
 void CheckRunOptions(const RunOptions& options);
+
+/// `value` as the shortest text that reads back as the same double ("0.9999999", "-5", "nan"): what a
+/// range error shows, so a rejected value never looks like one inside the range.
+std::string NumberText(double value);
+
+/// Throws InputError naming `flag` unless `file` (when not empty) ends in `extension` (".wav", any case):
+/// an output is named after what is written to it.
+void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension);
 
 /// The effects configuration the options select: --effects FILE, else --preset NAME, else the default
 /// preset.

@@ -10,7 +10,8 @@
 //
 // Exit code 0 on success (and for --help, --version and help), 1 on any error: one line per problem on
 // stderr ("contactfx: error: ..."), naming file and field, or for a command line that is not understood
-// the unknown command or option with the nearest valid one and a pointer at --help.
+// the unknown command or option with the nearest valid one and a pointer at --help. A failed write of
+// standard output (`> /dev/full`) is an error too.
 #include "bench_command.h"
 #include "cli_common.h"
 #include "contactfx/version.h"
@@ -22,8 +23,13 @@
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <string>
+#include <unistd.h>
 
 namespace
 {
@@ -36,6 +42,25 @@ constexpr const char* kFooter = R"(Examples:
 
 'contactfx help COMMAND' (or 'contactfx COMMAND --help') shows the options of a command.)";
 
+// Flushes standard output and reports a failed write of it (a full disk, `> /dev/full`) on stderr: what a
+// command printed is its result, so losing it is an error. Returns `result`, or kExitError when standard
+// output failed.
+int CheckStandardOutput(int result)
+{
+    errno = 0;
+    std::cout.flush(); // its buffer is stdout's: the first write that fails may be this one
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (flushed && !std::ferror(stdout) && std::cout.good())
+    {
+        return result;
+    }
+    // The reason is known when the final flush failed; an earlier failed write left only the error flag.
+    std::cerr << "contactfx: error: standard output: write failed"
+              << (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) << '\n';
+    return cfx::cli::kExitError;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -43,6 +68,13 @@ int main(int argc, char** argv)
     // A file size limit (ulimit -f) makes writes fail with EFBIG, reported naming the file, instead of
     // killing contactfx (and ffmpeg, which inherits this) with SIGXFSZ halfway through a file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // Into a file or pipe, what a command prints goes out in 64 KiB pieces, most outputs in one at the end
+    // (CheckStandardOutput), where a failed write still knows its reason; a terminal stays line-buffered.
+    if (::isatty(STDOUT_FILENO) == 0)
+    {
+        static char buffer[1 << 16]; // glibc ignores the size without a buffer
+        std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
+    }
     CLI::App app{"contactfx: physically driven particle effects from Box2D contacts", "contactfx"};
     app.set_version_flag("--version", std::string("contactfx ") + cfx::kVersion,
                          "Print the version and exit");
@@ -66,11 +98,11 @@ int main(int argc, char** argv)
     }
     catch (const CLI::Success& helpOrVersion) // --help, --help-all, --version: on stdout, exit code 0
     {
-        return app.exit(helpOrVersion);
+        return CheckStandardOutput(app.exit(helpOrVersion));
     }
     catch (const CLI::ParseError& error)
     {
-        return cfx::cli::ReportParseError(app, error);
+        return CheckStandardOutput(cfx::cli::ReportParseError(app, error));
     }
-    return result;
+    return CheckStandardOutput(result);
 }

@@ -30,6 +30,12 @@
 namespace cfx::cli
 {
 
+/// Why `file` (as given) cannot be an output, or "" when it can: its folder is missing or not a folder
+/// (`out/afile/x.png` with out/afile a file: "\"out/afile\" is not a folder"), or OutputFileProblem's
+/// reasons (a directory, a device, a read-only file, ...). What Prepare() checks for every output; a
+/// command may call it earlier, once for a pattern of many files (render's PNG sequence).
+std::string OutputProblem(const std::filesystem::path& file);
+
 class OutputFiles
 {
 public:

@@ -1,11 +1,7 @@
 #include "plot_option.h"
 
+#include "cli_common.h"
 #include "contactfx/effects.h"
-#include "contactfx/error.h"
-
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 
 namespace cfx::cli
 {
@@ -19,17 +15,7 @@ void AddPlotOption(CLI::App& command, std::string& file)
 
 void CheckPlotFile(const std::string& file)
 {
-    if (file.empty())
-    {
-        return;
-    }
-    std::string extension = std::filesystem::path(file).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".png")
-    {
-        throw InputError("<command line>", "--plot", "expected a .png file, found \"" + file + "\"");
-    }
+    CheckExtension("--plot", file, ".png");
 }
 
 PlotWriter::PlotWriter(std::string file, const Effects& effects) : m_file(std::move(file))

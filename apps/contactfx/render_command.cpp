@@ -100,11 +100,17 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
     }
     if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 240.0)
     {
-        Refuse("--fps", "expected a number in (0, 240], found " + std::to_string(options.fps));
+        Refuse("--fps", "expected a number in (0, 240], found " + NumberText(options.fps));
     }
     if (!std::isfinite(options.view) || options.view <= 0.0 || options.view > 1e6)
     {
-        Refuse("--view", "expected metres in (0, 1e6], found " + std::to_string(options.view));
+        Refuse("--view", "expected metres in (0, 1e6], found " + NumberText(options.view));
+    }
+    // What the target is comes before what its name says (`--out /dev/full` is a device), and a
+    // sequence's folder is checked here once, not once per frame.
+    if (const std::string problem = OutputProblem(options.out); !problem.empty())
+    {
+        throw InputError(options.out, "--out", problem);
     }
     render::OutputKind kind;
     try
@@ -119,7 +125,7 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
     {
         if (!std::isfinite(*options.time) || *options.time < 0.0 || *options.time > 86400.0)
         {
-            Refuse("--time", "expected a number in [0, 86400], found " + std::to_string(*options.time));
+            Refuse("--time", "expected a number in [0, 86400], found " + NumberText(*options.time));
         }
         if (kind != render::OutputKind::png)
         {

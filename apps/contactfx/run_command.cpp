@@ -123,6 +123,14 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     }
     try
     {
+        if (events)
+        {
+            // The scrapes still open end with the run: every scrape_began has its scrape_ended.
+            for (const EffectEvent& event : simulation.OpenScrapesEnded())
+            {
+                outputs.Append(*events, EventJsonLine(event, simulation.GetEffects().Config(), options.hz));
+            }
+        }
         sound.Finish(static_cast<double>(simulation.Time()));
     }
     catch (const InputError& error)

@@ -1,5 +1,6 @@
 #include "sound_output.h"
 
+#include "cli_common.h"
 #include "contactfx/error.h"
 
 #include <cmath>
@@ -33,11 +34,10 @@ void CheckAudioSeconds(double seconds, const std::string& flag)
     const double most = static_cast<double>(MaxWavSamples()) / SoundSynth::kSampleRate;
     if (seconds > most)
     {
-        char message[160];
-        std::snprintf(message, sizeof message,
-                      "a WAV file holds at most %.0f s of 48 kHz 16-bit audio, asked for %.0f s (--seconds)",
-                      most, seconds);
-        throw InputError("<command line>", flag, message);
+        throw InputError("<command line>", flag,
+                         "a WAV file holds at most " + NumberText(std::floor(most * 100.0) / 100.0) +
+                             " s of 48 kHz 16-bit audio, asked for " + NumberText(seconds) +
+                             " s (--seconds)");
     }
 }
 
@@ -47,6 +47,7 @@ SoundOutput::SoundOutput(OutputFiles& outputs, const std::string& audio, const s
 {
     if (!audio.empty())
     {
+        CheckExtension("--audio", audio, ".wav");
         m_audio = outputs.Add("--audio", audio);
     }
     else if (!video.empty())

@@ -31,7 +31,8 @@ class SoundOutput
 {
 public:
     /// Registers with `outputs` (before Prepare): `audio` (--audio) and `voices` (--voices) when not empty;
-    /// with `video` not empty and no `audio`, a scratch WAV beside the video for muxing.
+    /// with `video` not empty and no `audio`, a scratch WAV beside the video for muxing. Throws InputError
+    /// naming --audio when `audio` does not end in .wav.
     SoundOutput(OutputFiles& outputs, const std::string& audio, const std::string& voices,
                 const std::filesystem::path& video = {});
 

@@ -109,12 +109,22 @@ Report CheckEffects(const std::string& file, const std::string& text)
     return report;
 }
 
-Report CheckScene(const std::string& file, const std::string& text, const EffectsConfig* config)
+// `config`: what the scene's materials are checked against; nullptr when --effects failed to load, which
+// leaves the scene not fully checked: an error of its own, not "ok".
+Report CheckScene(const std::string& file, const std::string& text, const EffectsConfig* config,
+                  const std::string& effectsFile)
 {
     Report report(file, FileKind::scene);
     report.errors = ValidateRubeString(text, file, &report.counts, &report.warnings);
-    if (!report.errors.empty() || config == nullptr)
+    if (!report.errors.empty())
     {
+        return report;
+    }
+    if (config == nullptr)
+    {
+        report.errors.push_back(Diagnostic{file, "",
+                                           "materials not checked: the effects config \"" + effectsFile +
+                                               "\" (--effects) has problems"});
         return report;
     }
     try
@@ -145,8 +155,9 @@ Report Check(const std::string& file, const Options& options, const EffectsConfi
         report.errors = error.Diagnostics();
         return report;
     }
-    Report report = Classify(file, text, options.as) == FileKind::effects ? CheckEffects(file, text)
-                                                                          : CheckScene(file, text, config);
+    Report report = Classify(file, text, options.as) == FileKind::effects
+                        ? CheckEffects(file, text)
+                        : CheckScene(file, text, config, options.effects.effects);
     if (options.strict)
     {
         for (Diagnostic& warning : report.warnings)

@@ -20,6 +20,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace cfx
 {
@@ -50,7 +51,8 @@ public:
     /// Replaces the effects by ones made from `config` (same seed), keeping the world as it is: bodies,
     /// joints and touching contacts stay (the new effects pick the contacts up at the next step);
     /// particles and counters start afresh. Throws InputError, leaving everything as it was, when
-    /// `config` is invalid or lacks a material that the scene's fixtures name. The testbed's live edits.
+    /// `config` is invalid or lacks a material that the scene's fixtures name. `config` may be
+    /// GetEffects().Config(). The testbed's live edits.
     void ReplaceEffects(const EffectsConfig& config);
 
     /// Wall-clock cost of the last Step(), for statistics panels; never affects the simulation.
@@ -70,8 +72,17 @@ public:
     const Effects& GetEffects() const { return *m_effects; }
     const std::optional<Car>& GetCar() const { return m_car; }
     /// The run's hash (state_hash.h): every event reported since the start (or the last ReplaceEffects),
-    /// then the live particles now.
+    /// then the live particles now. The events of OpenScrapesEnded() are not in it.
     StateHash RunHash() const;
+
+    /// What ends the run's scrapes when it stops here: one scrapeEnded event for every scrape that began
+    /// and has not ended (since the start, or the last ReplaceEffects), in id order (the order they began).
+    /// Each carries the scrape's id, rule, materials, fixtures, point and normal as last reported, the
+    /// step of the last Step() (so its time is Time()) and end == ScrapeEnd::none: the library ends a
+    /// scrape only while it steps, and has no reason for "the application stopped stepping";
+    /// EventJsonLine writes it as "reason": "run_ended". Changes nothing: stepping on is allowed, and the
+    /// library then goes on reporting these scrapes. Empty before the first Step().
+    std::vector<EffectEvent> OpenScrapesEnded() const;
 
 private:
     Scene m_scene;
@@ -86,6 +97,12 @@ private:
     std::uint64_t m_steps = 0;
     StepTimes m_times;
     StateHash m_events; // every event so far
+    // The last scrapeBegan or scrapeChanged of each scrape not ended yet, in no order; reserved for
+    // budget.contacts scrapes, so that Step() does not allocate while no more are open at once.
+    std::vector<EffectEvent> m_openScrapes;
+
+    void FollowScrapes(std::span<const EffectEvent> events);
+    void ResetOpenScrapes();
 };
 
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
@@ -98,9 +115,10 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
 /// One line of the CLI's events file (JSON Lines, newline included): {"type" (scrape_began,
 /// scrape_changed, scrape_ended, impact), "step", "time" (s simulated when reported), "id", "pair"
 /// ("A+B", names sorted), "point": [x, y], "normal": [x, y], then "intensity", "tangential_speed",
-/// "normal_impulse" for scrapes, "reason" for ended scrapes, "approach_speed", "normal_impulse" for
-/// impacts}; particle hits: {"type": "particle_hits", "step", "time", "particle_type" (its name), "count",
-/// "point": [x, y] (their mean touch point), "mean_speed" (m/s)}.
+/// "normal_impulse" for scrapes, "reason" for ended scrapes ("contact_ended", "asleep",
+/// "below_threshold", "destroyed", or "run_ended" for those of Simulation::OpenScrapesEnded),
+/// "approach_speed", "normal_impulse" for impacts}; particle hits: {"type": "particle_hits", "step", "time",
+/// "particle_type" (its name), "count", "point": [x, y] (their mean touch point), "mean_speed" (m/s)}.
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz);
 
 } // namespace cfx

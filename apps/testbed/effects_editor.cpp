@@ -2,8 +2,37 @@
 
 #include "contactfx/scene/effects_json.h"
 
+#include <algorithm>
+
 namespace cfx::testbed
 {
+
+SoundRuleDef EffectsEditor::NewSoundRule(const EffectsConfig& config)
+{
+    auto samePair = [](const std::string& a1, const std::string& b1, const std::string& a2,
+                       const std::string& b2) { return (a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2); };
+    SoundRuleDef rule;
+    for (const RuleDef& pair : config.rules)
+    {
+        const bool sounded =
+            std::any_of(config.sound.rules.begin(), config.sound.rules.end(),
+                        [&](const SoundRuleDef& sound) {
+                            return samePair(sound.materialA, sound.materialB, pair.materialA, pair.materialB);
+                        });
+        if (!sounded)
+        {
+            rule.materialA = pair.materialA;
+            rule.materialB = pair.materialB;
+            return rule;
+        }
+    }
+    if (!config.rules.empty())
+    {
+        rule.materialA = config.rules.front().materialA;
+        rule.materialB = config.rules.front().materialB;
+    }
+    return rule;
+}
 
 void EffectsEditor::Follow(const Session& session, bool force)
 {

@@ -31,6 +31,9 @@ struct EffectsEditor
     void Apply(Session& session);
     /// Writes the draft to savePath, unless it has problems.
     void Save();
+    /// What "Add sound rule" adds: a sound rule for the first pair rule (in order) that has none yet, else
+    /// for the first pair rule, else with no materials (a sound rule applies only to a pair rule's pair).
+    static SoundRuleDef NewSoundRule(const EffectsConfig& config);
 
 private:
     /// Validates the draft into `problems`; when invalid, says so in `message`, starting with `refused`.

@@ -316,13 +316,7 @@ bool SoundTab(EffectsConfig& draft)
             }
             return edited;
         },
-        [&]
-        {
-            SoundRuleDef rule;
-            rule.materialA = draft.materials.empty() ? "" : draft.materials.front();
-            rule.materialB = rule.materialA;
-            return rule;
-        });
+        [&] { return EffectsEditor::NewSoundRule(draft); });
     return finished;
 }
 

@@ -3,6 +3,8 @@
 #include "contactfx/error.h"
 #include "harness/scenes.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <unistd.h>
 
@@ -35,6 +37,18 @@ void CheckWritable(const std::string& path, const char* flag)
     }
 }
 
+// A screenshot is a PNG, whatever it is called: a name that says otherwise is refused.
+void CheckPngName(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".png")
+    {
+        throw InputError(kCommandLine, "--screenshot", "expected a .png file, found \"" + path + "\"");
+    }
+}
+
 } // namespace
 
 void CheckOptions(const Options& options, bool framesGiven)
@@ -56,6 +70,7 @@ void CheckOptions(const Options& options, bool framesGiven)
             throw InputError(kCommandLine, "--screenshot", "needs --frames N (the frame to save)");
         }
         CheckWritable(options.screenshot, "--screenshot");
+        CheckPngName(options.screenshot);
     }
 }
 

@@ -82,6 +82,23 @@ template <typename S> struct Field
     float step = 0.0f; ///< the testbed's drag speed for numbers, per pixel
 };
 
+/// What every message about an integer field states it expects: "a number in [1, 4000000]" (the range the
+/// docs show as "integer [1, 4000000]"), whatever the wrong value was (out of range, negative, too large for
+/// the member, not a whole number, not a number), from the reader and from Validate alike.
+std::string ExpectedInteger(const FieldRange& range);
+
+/// What a text field of `rule` must hold, for messages: "a material name", "a particle type name", ...
+std::string_view ExpectedText(TextRule rule);
+
+/// Whether a field must be given: a name, or a reference to a material or particle type by name (their
+/// defaults are empty; a pattern's is "*"). Such a field that is missing, or empty, is an error.
+template <typename S> bool IsRequired(const Field<S>& field)
+{
+    return std::holds_alternative<std::string S::*>(field.member) &&
+           (field.text == TextRule::name || field.text == TextRule::material ||
+            field.text == TextRule::particleType);
+}
+
 /// The fields of each configuration struct, in the order they are checked and read. The top level of
 /// EffectsConfig (name, materials and the lists of these structs) is not a table: its lists are checked
 /// as lists (unique names, one rule per pair).

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <variant>
@@ -78,14 +79,49 @@ std::optional<Color> ReadColor(const Json& value, const std::string& path, Diagn
     return color;
 }
 
-// One field of the object. Ranges are not checked here but by Validate, in the same pass; integers are only
-// limited to what their member holds (budget counts to 2^30, which fits an int).
+// The whole number `value` holds when it is one within `range`, else nothing.
+std::optional<long long> IntegerIn(const Json& value, const FieldRange& range)
+{
+    double number = 0.0;
+    if (value.is_number_unsigned())
+    {
+        const auto whole = value.get<std::uint64_t>();
+        if (whole > static_cast<std::uint64_t>(range.max))
+        {
+            return std::nullopt;
+        }
+        number = static_cast<double>(whole);
+    }
+    else if (value.is_number())
+    {
+        number = value.get<double>(); // exact for every integer the ranges allow (at most 4e6)
+    }
+    else
+    {
+        return std::nullopt;
+    }
+    if (!std::isfinite(number) || std::floor(number) != number || number < range.min || number > range.max)
+    {
+        return std::nullopt;
+    }
+    return static_cast<long long>(number);
+}
+
+// One field of the object. Ranges of numbers are checked by Validate, in the same pass. Integers are checked
+// here against their documented range (a value outside it may not fit the member), with the message Validate
+// gives for them. A missing required field is reported as missing.
 template <typename S> void ReadField(const ObjectReader& reader, const Field<S>& field, S& out)
 {
     const std::string_view key = field.name;
     const Json* value = reader.Find(key);
     if (value == nullptr)
     {
+        if (IsRequired(field))
+        {
+            reader.Diagnostics().Add(reader.FieldPath(key), "expected " +
+                                                                std::string(ExpectedText(field.text)) +
+                                                                ", but the required field is missing");
+        }
         return;
     }
     std::visit(
@@ -108,14 +144,19 @@ template <typename S> void ReadField(const ObjectReader& reader, const Field<S>&
             {
                 out.*member = reader.String(key, out.*member);
             }
-            else if constexpr (std::is_same_v<M, std::uint16_t S::*>)
+            else if constexpr (std::is_same_v<M, std::uint16_t S::*> || std::is_same_v<M, std::uint32_t S::*>)
             {
-                out.*member = static_cast<std::uint16_t>(reader.Int(key, out.*member, 0, 0xFFFF));
-            }
-            else if constexpr (std::is_same_v<M, std::uint32_t S::*>)
-            {
-                out.*member =
-                    static_cast<std::uint32_t>(reader.Int(key, static_cast<int>(out.*member), 0, 1 << 30));
+                if (const std::optional<long long> number = IntegerIn(*value, field.range))
+                {
+                    out.*member = static_cast<std::remove_reference_t<decltype(out.*member)>>(*number);
+                }
+                else
+                {
+                    reader.Diagnostics().Add(
+                        reader.FieldPath(key),
+                        "expected " + ExpectedInteger(field.range) + ", found " +
+                            (value->is_number() ? value->dump() : scene_detail::Describe(*value)));
+                }
             }
             else if constexpr (std::is_same_v<M, Color S::*>)
             {
@@ -191,8 +232,10 @@ void ReadObject(const ObjectReader& reader, const Json& object, std::span<const 
     }
 }
 
-// Calls `each(reader, index)` for every object of an array field.
-template <typename F> void ForEachObject(const ObjectReader& parent, const char* key, F each)
+// Appends one S to `out` for every element of the array field `key`, read with `fields`.
+template <typename S>
+void ReadList(const ObjectReader& parent, const char* key, std::span<const Field<S>> fields,
+              std::vector<S>& out)
 {
     const Json* array = parent.Array(key);
     if (array == nullptr)
@@ -202,16 +245,19 @@ template <typename F> void ForEachObject(const ObjectReader& parent, const char*
     for (std::size_t i = 0; i < array->size(); ++i)
     {
         const std::string path = scene_detail::IndexPath(parent.FieldPath(key), i);
-        if (!(*array)[i].is_object())
+        const Json& element = (*array)[i];
+        S value;
+        if (element.is_object())
         {
-            parent.Diagnostics().Add(path,
-                                     "expected an object, found " + scene_detail::Describe((*array)[i]));
+            ReadObject(ObjectReader(element, path, parent.Diagnostics()), element, fields, value);
         }
-        // A bad element is read as an empty object (defaults) so that the following elements keep their
-        // indices for Validate's paths; what Validate says about it is covered by the error above.
-        static const Json kEmpty = Json::object();
-        const Json& element = (*array)[i].is_object() ? (*array)[i] : kEmpty;
-        each(ObjectReader(element, path, parent.Diagnostics()), element);
+        else
+        {
+            // A bad element keeps its place as defaults so that the following elements keep their indices
+            // for Validate's paths; what Validate says about it is covered by this error.
+            parent.Diagnostics().Add(path, "expected an object, found " + scene_detail::Describe(element));
+        }
+        out.push_back(std::move(value));
     }
 }
 
@@ -249,27 +295,9 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         }
     }
 
-    ForEachObject(top, "particleTypes",
-                  [&](const ObjectReader& reader, const Json& object)
-                  {
-                      ParticleTypeDef type;
-                      ReadObject(reader, object, ParticleTypeFields(), type);
-                      config.particleTypes.push_back(type);
-                  });
-    ForEachObject(top, "rules",
-                  [&](const ObjectReader& reader, const Json& object)
-                  {
-                      RuleDef rule;
-                      ReadObject(reader, object, RuleFields(), rule);
-                      config.rules.push_back(rule);
-                  });
-    ForEachObject(top, "assignments",
-                  [&](const ObjectReader& reader, const Json& object)
-                  {
-                      MaterialAssignment assignment;
-                      ReadObject(reader, object, AssignmentFields(), assignment);
-                      config.assignments.push_back(assignment);
-                  });
+    ReadList(top, "particleTypes", ParticleTypeFields(), config.particleTypes);
+    ReadList(top, "rules", RuleFields(), config.rules);
+    ReadList(top, "assignments", AssignmentFields(), config.assignments);
     if (const Json* budget = top.Object("budget"))
     {
         ReadObject(ObjectReader(*budget, "budget", diagnostics), *budget, BudgetFields(), config.budget);
@@ -279,13 +307,7 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         static constexpr std::string_view kSoundLists[] = {"rules"};
         const ObjectReader reader(*sound, "sound", diagnostics);
         ReadObject(reader, *sound, SoundFields(), config.sound, kSoundLists);
-        ForEachObject(reader, "rules",
-                      [&](const ObjectReader& ruleReader, const Json& object)
-                      {
-                          SoundRuleDef rule;
-                          ReadObject(ruleReader, object, SoundRuleFields(), rule);
-                          config.sound.rules.push_back(rule);
-                      });
+        ReadList(reader, "rules", SoundRuleFields(), config.sound.rules);
     }
     return config;
 }

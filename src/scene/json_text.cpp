@@ -11,11 +11,12 @@ namespace
 {
 
 /// Builds the document like nlohmann's own DOM parser, but keeps the position of a parse error (nlohmann's
-/// exceptions for number overflow carry none).
+/// exceptions for number overflow carry none) and reports a key repeated in one object under its JSON path
+/// (nlohmann keeps the last value: the first would silently do nothing).
 class DomBuilder
 {
 public:
-    explicit DomBuilder(Json& root) : m_root(root) {}
+    DomBuilder(Json& root, DiagnosticList& diagnostics) : m_root(root), m_diagnostics(diagnostics) {}
 
     bool null() { return Put(Json(nullptr)); }
     bool boolean(bool value) { return Put(Json(value)); }
@@ -27,11 +28,16 @@ public:
 
     bool start_object(std::size_t)
     {
-        m_stack.push_back(Insert(Json(Json::value_t::object)));
+        Open(Json(Json::value_t::object));
         return true;
     }
     bool key(Json::string_t& name)
     {
+        if (m_stack.back().node->contains(name))
+        {
+            m_diagnostics.Add(JoinPath(PathOfOpen(), name),
+                              "duplicate key \"" + name + "\": each key may appear once in an object");
+        }
         m_key = std::move(name);
         return true;
     }
@@ -42,7 +48,7 @@ public:
     }
     bool start_array(std::size_t)
     {
-        m_stack.push_back(Insert(Json(Json::value_t::array)));
+        Open(Json(Json::value_t::array));
         return true;
     }
     bool end_array()
@@ -71,6 +77,45 @@ private:
         return true;
     }
 
+    // An object or array being filled, and where it is in its parent: the key, or the index when the parent
+    // is an array (the paths are only built for a message).
+    struct OpenContainer
+    {
+        Json* node = nullptr;
+        std::string key;
+        std::size_t index = 0;
+    };
+
+    void Open(Json container)
+    {
+        OpenContainer open;
+        if (!m_stack.empty())
+        {
+            if (m_stack.back().node->is_array())
+            {
+                open.index = m_stack.back().node->size();
+            }
+            else
+            {
+                open.key = m_key;
+            }
+        }
+        open.node = Insert(std::move(container));
+        m_stack.push_back(std::move(open));
+    }
+
+    // The JSON path of the innermost open container ("" for the root).
+    std::string PathOfOpen() const
+    {
+        std::string path;
+        for (std::size_t level = 1; level < m_stack.size(); ++level)
+        {
+            path = m_stack[level - 1].node->is_array() ? IndexPath(path, m_stack[level].index)
+                                                       : JoinPath(path, m_stack[level].key);
+        }
+        return path;
+    }
+
     Json* Insert(Json value)
     {
         if (m_stack.empty())
@@ -78,7 +123,7 @@ private:
             m_root = std::move(value);
             return &m_root;
         }
-        Json& container = *m_stack.back();
+        Json& container = *m_stack.back().node;
         if (container.is_array())
         {
             container.push_back(std::move(value));
@@ -90,7 +135,8 @@ private:
     }
 
     Json& m_root;
-    std::vector<Json*> m_stack;
+    DiagnosticList& m_diagnostics;
+    std::vector<OpenContainer> m_stack;
     std::string m_key;
     bool m_failed = false;
     std::size_t m_position = 0;
@@ -153,7 +199,7 @@ std::optional<Json> ParseJsonText(std::string_view text, DiagnosticList& diagnos
         return std::nullopt;
     }
     Json root;
-    DomBuilder builder(root);
+    DomBuilder builder(root, diagnostics);
     bool ok = false;
     try
     {

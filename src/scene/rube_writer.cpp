@@ -119,13 +119,30 @@ void SceneWriter::OrderJoints(b2World& world)
 
 std::vector<b2Fixture*> SceneWriter::OrderFixtures(b2Body& body) const
 {
-    // Only this body's fixtures are alive in its list, so the scene's records of others drop out.
+    // Only this body's fixtures are alive in its list, so the scene's records of others drop out. The back
+    // side of a one-sided shape is not a fixture of the file: it is saved as its front's one fixture.
+    std::unordered_set<const b2Fixture*> alive;
+    for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+    {
+        alive.insert(fixture);
+    }
+    std::unordered_set<const b2Fixture*> backSides;
+    for (const SceneFixture& record : m_scene.fixtures)
+    {
+        if (record.backSide != nullptr && alive.count(record.fixture) != 0)
+        {
+            backSides.insert(record.backSide);
+        }
+    }
     std::vector<b2Fixture*> ordered;
     for (const auto& [fixture, entry] : InFileOrder(
              body.GetFixtureList(), [](b2Fixture* fixture) { return fixture->GetNext(); }, m_scene.fixtures,
              [](const SceneFixture& record) { return record.fixture; }))
     {
-        ordered.push_back(fixture);
+        if (backSides.count(fixture) == 0)
+        {
+            ordered.push_back(fixture);
+        }
     }
     return ordered;
 }

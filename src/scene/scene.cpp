@@ -51,7 +51,8 @@ const SceneImage* Scene::FindImage(std::string_view name) const
 const SceneFixture* Scene::FindFixture(const b2Fixture* fixture) const
 {
     auto it = std::find_if(fixtures.begin(), fixtures.end(),
-                           [&](const SceneFixture& item) { return item.fixture == fixture; });
+                           [&](const SceneFixture& item)
+                           { return item.fixture == fixture || item.backSide == fixture; });
     return fixture == nullptr || it == fixtures.end() ? nullptr : &*it;
 }
 

@@ -3,13 +3,91 @@
 #include "scene/mass_check.h"
 #include "scene/rube_joints.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace cfx::scene_detail
 {
 
 namespace
 {
 
-b2Fixture* CreateFixture(b2Body& body, const FixtureModel& model)
+// The shape of a fixture as Box2D 2.4 takes it, for `side`: the file's own side, or the back side of a
+// one-sided shape (its vertices reversed, so that it collides on the other side). Returns false when the
+// shape has no back side (it is two-sided).
+bool MakeShape(const ShapeModel& shape, bool back, b2CircleShape& circle, b2PolygonShape& polygon,
+               b2EdgeShape& edge, b2ChainShape& chain, const b2Shape*& made)
+{
+    switch (shape.kind)
+    {
+    case ShapeModel::Kind::circle:
+        if (back)
+        {
+            return false;
+        }
+        circle.m_radius = shape.radius;
+        circle.m_p = shape.center;
+        made = &circle;
+        return true;
+    case ShapeModel::Kind::polygon:
+        if (back)
+        {
+            return false;
+        }
+        polygon.Set(shape.vertices.data(), static_cast<int32>(shape.vertices.size()));
+        made = &polygon;
+        return true;
+    case ShapeModel::Kind::edge:
+        if (!shape.oneSided)
+        {
+            if (back)
+            {
+                return false;
+            }
+            edge.SetTwoSided(shape.vertex1, shape.vertex2);
+        }
+        else if (back)
+        {
+            edge.SetOneSided(shape.vertex3, shape.vertex2, shape.vertex1, shape.vertex0);
+        }
+        else
+        {
+            edge.SetOneSided(shape.vertex0, shape.vertex1, shape.vertex2, shape.vertex3);
+        }
+        made = &edge;
+        return true;
+    case ShapeModel::Kind::chain:
+    {
+        std::vector<b2Vec2> vertices = shape.vertices;
+        if (back)
+        {
+            std::reverse(vertices.begin(), vertices.end());
+        }
+        const auto count = static_cast<int32>(vertices.size());
+        if (shape.loop)
+        {
+            chain.CreateLoop(vertices.data(), count);
+        }
+        else if (back)
+        {
+            chain.CreateChain(vertices.data(), count, shape.nextVertex, shape.prevVertex);
+        }
+        else
+        {
+            chain.CreateChain(vertices.data(), count, shape.prevVertex, shape.nextVertex);
+        }
+        made = &chain;
+        return true;
+    }
+    }
+    return false;
+}
+
+// The fixture, and for a one-sided shape (a chain, an edge with ghost vertices) its back side: RUBE
+// scenes are Box2D 2.3 scenes, where chains and edges collide on both sides whatever their winding, while
+// Box2D 2.4 makes them one-sided. The pair of opposite one-sided shapes collides on both sides, and
+// smoothly on both (a two-sided 2.4 edge would snag on the inner vertices).
+SceneFixture CreateFixture(b2Body& body, int bodyIndex, const FixtureModel& model)
 {
     b2FixtureDef def;
     def.friction = model.friction;
@@ -21,60 +99,21 @@ b2Fixture* CreateFixture(b2Body& body, const FixtureModel& model)
     def.filter.maskBits = model.maskBits;
     def.filter.groupIndex = model.groupIndex;
 
-    const ShapeModel& shape = model.shape;
-    b2Fixture* fixture = nullptr;
-    switch (shape.kind)
-    {
-    case ShapeModel::Kind::circle:
+    SceneFixture created{nullptr, nullptr, bodyIndex, model.name, model.properties};
+    for (const bool back : {false, true})
     {
         b2CircleShape circle;
-        circle.m_radius = shape.radius;
-        circle.m_p = shape.center;
-        def.shape = &circle;
-        fixture = body.CreateFixture(&def);
-        break;
-    }
-    case ShapeModel::Kind::polygon:
-    {
         b2PolygonShape polygon;
-        polygon.Set(shape.vertices.data(), static_cast<int32>(shape.vertices.size()));
-        def.shape = &polygon;
-        fixture = body.CreateFixture(&def);
-        break;
-    }
-    case ShapeModel::Kind::edge:
-    {
         b2EdgeShape edge;
-        if (shape.oneSided)
-        {
-            edge.SetOneSided(shape.vertex0, shape.vertex1, shape.vertex2, shape.vertex3);
-        }
-        else
-        {
-            edge.SetTwoSided(shape.vertex1, shape.vertex2);
-        }
-        def.shape = &edge;
-        fixture = body.CreateFixture(&def);
-        break;
-    }
-    case ShapeModel::Kind::chain:
-    {
         b2ChainShape chain;
-        const auto count = static_cast<int32>(shape.vertices.size());
-        if (shape.loop)
+        const b2Shape* shape = nullptr;
+        if (MakeShape(model.shape, back, circle, polygon, edge, chain, shape))
         {
-            chain.CreateLoop(shape.vertices.data(), count);
+            def.shape = shape;
+            (back ? created.backSide : created.fixture) = body.CreateFixture(&def);
         }
-        else
-        {
-            chain.CreateChain(shape.vertices.data(), count, shape.prevVertex, shape.nextVertex);
-        }
-        def.shape = &chain;
-        fixture = body.CreateFixture(&def);
-        break;
     }
-    }
-    return fixture;
+    return created;
 }
 
 void SetUpMass(b2Body& body, const BodyModel& model, DiagnosticList& diagnostics)
@@ -122,17 +161,19 @@ b2Body* CreateBody(b2World& world, const BodyModel& model, Scene& scene, Diagnos
 
     const int bodyIndex = static_cast<int>(scene.bodies.size());
     scene.bodies.push_back(SceneBody{body, model.name, model.properties});
-    std::vector<b2Fixture*> created;
+    const std::size_t first = scene.fixtures.size();
     for (const FixtureModel& fixtureModel : model.fixtures)
     {
-        b2Fixture* fixture = CreateFixture(*body, fixtureModel);
-        created.push_back(fixture);
-        scene.fixtures.push_back(
-            SceneFixture{fixture, bodyIndex, fixtureModel.name, fixtureModel.properties});
+        scene.fixtures.push_back(CreateFixture(*body, bodyIndex, fixtureModel));
     }
-    for (std::size_t i = 0; i < created.size(); ++i)
+    for (std::size_t i = 0; i < model.fixtures.size(); ++i)
     {
-        created[i]->SetDensity(model.fixtures[i].density);
+        const SceneFixture& created = scene.fixtures[first + i];
+        created.fixture->SetDensity(model.fixtures[i].density);
+        if (created.backSide != nullptr)
+        {
+            created.backSide->SetDensity(model.fixtures[i].density);
+        }
     }
     SetUpMass(*body, model, diagnostics);
     // RUBE's velocity is the velocity of the centre of mass, which moved with the mass update: set it again.

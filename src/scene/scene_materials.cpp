@@ -91,6 +91,10 @@ void AssignSceneMaterials(const Scene& scene, Effects& effects, std::string_view
         if (materials[f].IsValid())
         {
             effects.SetMaterial(scene.fixtures[f].fixture, materials[f]);
+            if (scene.fixtures[f].backSide != nullptr)
+            {
+                effects.SetMaterial(scene.fixtures[f].backSide, materials[f]);
+            }
         }
     }
 }

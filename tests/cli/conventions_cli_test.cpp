@@ -4,6 +4,8 @@
 #include "cli/cli_support.h"
 #include "contactfx/version.h"
 
+#include <cerrno>
+#include <cstring>
 #include <gtest/gtest.h>
 
 namespace cfx::test
@@ -117,6 +119,32 @@ TEST(CliConventions, NoCommandShowsTheShortUsage)
     EXPECT_NE(result.output.find("demo, run, render"), std::string::npos) << result.output;
     EXPECT_NE(result.output.find("'contactfx --help'"), std::string::npos) << result.output;
     EXPECT_EQ(result.output.find("A subcommand is required"), std::string::npos) << result.output;
+}
+
+// What a command prints on standard output is its result: a failed write of it (a full disk) is an error
+// on stderr and exit code 1, not a silent success.
+TEST(CliConventions, AFailedWriteOfStandardOutputIsAnError)
+{
+    if (!std::filesystem::exists("/dev/full"))
+    {
+        GTEST_SKIP() << "no /dev/full";
+    }
+    for (const std::string& args :
+         {std::string("preset default"), "validate --json " + Scene("grinder.json"), std::string("help"),
+          std::string("--help"), std::string("--version"), std::string("demo --seconds 0.1")})
+    {
+        // Standard output to /dev/full, standard error to the test.
+        const CliResult result = RunCommand("{ " + std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx " +
+                                            args + " > /dev/full; }");
+        EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.output;
+        EXPECT_NE(result.output.find("contactfx: error: standard output: write failed"), std::string::npos)
+            << args << "\n"
+            << result.output;
+    }
+    const CliResult full =
+        RunCommand("{ " + std::string(CONTACTFX_BINARY_DIR) + "/bin/contactfx preset default > /dev/full; }");
+    EXPECT_EQ(full.output, "contactfx: error: standard output: write failed: " +
+                               std::string(std::strerror(ENOSPC)) + "\n");
 }
 
 } // namespace cfx::test

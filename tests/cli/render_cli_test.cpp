@@ -176,6 +176,75 @@ TEST(CliRender, BadFlagsAreRefusedNamingTheFlagAndWriteNothing)
     ExpectRefused((dir / "missing.json").string() + png, dir, "missing.json");
 }
 
+std::size_t LineCount(const std::string& text)
+{
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// A sequence whose folder is missing, or a file on the way to it, is one error before anything is
+// rendered, not one per frame.
+TEST(CliRender, ASequenceIntoNoFolderIsOneErrorAndNoFile)
+{
+    const std::filesystem::path dir = ScratchDir("render_sequence_folder");
+    const std::string missing = (dir / "frames" / "f_%04d.png").string();
+    CliResult result = RunCli("render --demo --seconds 1" + kTiny + "--out " + missing);
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(result.output, "contactfx: error: " + missing + ": --out: folder \"" +
+                                 (dir / "frames").string() + "\" does not exist\n");
+    EXPECT_TRUE(FilesIn(dir).empty());
+
+    WriteTestFile(dir / "afile", "x\n");
+    for (const std::filesystem::path& through :
+         {dir / "afile" / "f_%d.png", dir / "afile" / "sub" / "f_%d.png"})
+    {
+        result = RunCli("render --demo --seconds 1" + kTiny + "--out " + through.string());
+        EXPECT_EQ(result.exitCode, 1) << result.output;
+        EXPECT_EQ(LineCount(result.output), 1u) << result.output;
+        EXPECT_NE(result.output.find(through.string() + ": --out: \"" + (dir / "afile").string() +
+                                     "\" is not a folder"),
+                  std::string::npos)
+            << result.output;
+        EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"afile"});
+    }
+}
+
+// What the target is comes before what its name says: a device is refused as a device.
+TEST(CliRender, ADeviceIsRefusedAsADevice)
+{
+    if (!std::filesystem::exists("/dev/full"))
+    {
+        GTEST_SKIP() << "no /dev/full";
+    }
+    const CliResult result = RunCli("render --demo --seconds 0.1" + kTiny + "--out /dev/full");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("contactfx: error: /dev/full: --out: is a device, not a regular file"),
+              std::string::npos)
+        << result.output;
+}
+
+// A rejected number is shown as given (shortest round trip), never rounded into its range, and
+// nothing follows it on its line.
+TEST(CliRender, RangeErrorsShowTheValueAsGiven)
+{
+    const std::filesystem::path dir = ScratchDir("render_range_text");
+    const std::string png = " --out " + (dir / "f.png").string();
+    const std::string sequence = " --out " + (dir / "f_%d.png").string();
+    const std::pair<std::string, std::string> cases[] = {
+        {"--fps 240.0000001" + sequence, "--fps: expected a number in (0, 240], found 240.0000001\n"},
+        {"--view -5" + png, "--view: expected metres in (0, 1e6], found -5\n"},
+        {"--time nan" + png, "--time: expected a number in [0, 86400], found nan\n"},
+        {"--seconds 86400.0000001" + png,
+         "--seconds: expected a number in (0, 86400], found 86400.0000001\n"},
+    };
+    for (const auto& [args, expected] : cases)
+    {
+        const CliResult result = RunCli("render --demo" + kTiny + args);
+        EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.output;
+        EXPECT_NE(result.output.find(expected), std::string::npos) << args << "\n" << result.output;
+    }
+    EXPECT_TRUE(FilesIn(dir).empty());
+}
+
 TEST(CliPlot, RunAndDemoWriteATuningPlot)
 {
     const std::filesystem::path dir = ScratchDir("plot");

@@ -202,4 +202,45 @@ TEST(CliRun, BadInputIsRefusedWithFileAndField)
                   {"unknown.effects.json", "rules[0].materialB", "wood"});
 }
 
+// Seeds beyond 2^64-1 are refused, not saturated; 2^64-1 itself is a seed.
+TEST(CliRun, SeedsBeyondTwoToTheSixtyFourAreRefused)
+{
+    const std::filesystem::path dir = ScratchDir("run_seed_range");
+    for (const char* seed : {"18446744073709551616", "99999999999999999999999"})
+    {
+        ExpectRefused(std::string("demo --seconds 0.1 --seed ") + seed, dir / "stats.json",
+                      {"--seed: expected a whole number from 0 to 2^64-1, found " + std::string(seed)});
+    }
+    const CliResult largest = RunCli("demo --seconds 0.1 --seed 18446744073709551615");
+    EXPECT_EQ(largest.exitCode, 0) << largest.output;
+    EXPECT_NE(largest.output.find("seed 18446744073709551615"), std::string::npos) << largest.output;
+}
+
+// A rejected number is shown as given (shortest round trip), never rounded into its range, and
+// nothing follows it on its line.
+TEST(CliRun, RangeErrorsShowTheValueAsGiven)
+{
+    const std::filesystem::path stats = ScratchDir("run_range_text") / "stats.json";
+    ExpectRefused("run --scene grinder --hz 0.9999999", stats,
+                  {"--hz: expected a number in [1, 10000], found 0.9999999\n"});
+    ExpectRefused("run --scene grinder --seconds 86400.0000001", stats,
+                  {"--seconds: expected a number in (0, 86400], found 86400.0000001\n"});
+    ExpectRefused("run --scene grinder --seconds -5", stats, {"found -5\n"});
+    ExpectRefused("run --scene grinder --hz nan", stats, {"found nan\n"});
+}
+
+// round(seconds * hz) steps: a --seconds below half a step at that --hz would simulate nothing, which is
+// refused, saying why; half a step or more is one step.
+TEST(CliRun, SecondsThatMakeNoStepAreRefused)
+{
+    const std::filesystem::path dir = ScratchDir("run_no_step");
+    ExpectRefused("run --scene grinder --hz 1 --seconds 0.1", dir / "z.json",
+                  {"--seconds: 0.1 s at --hz 1 is less than half a step", "give --seconds 0.5 or more"});
+    ExpectRefused("demo --hz 60 --seconds 0.008", dir / "z.json", {"--seconds: 0.008 s at --hz 60"});
+    const CliResult one =
+        RunCli("run --scene grinder --hz 1 --seconds 0.5 --stats " + (dir / "one.json").string());
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    EXPECT_EQ(nlohmann::json::parse(FileText(dir / "one.json"))["steps"], 1);
+}
+
 } // namespace cfx::test

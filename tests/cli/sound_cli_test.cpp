@@ -6,6 +6,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 namespace cfx::test
 {
@@ -273,13 +274,37 @@ TEST(CliSound, AudioAndVoicesOutputsAreCheckedBeforeTheRun)
     CliResult result = RunCli("demo --seconds 1 --audio " + (dir / "missing" / "a.wav").string());
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find("--audio: folder"), std::string::npos) << result.output;
-    result = RunCli("demo --seconds 1 --audio " + (dir / "x").string() + " --voices " + (dir / "x").string());
+    result = RunCli("demo --seconds 1 --audio " + (dir / "x.wav").string() + " --voices " +
+                    (dir / "x.wav").string());
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find("is also the output of --audio"), std::string::npos) << result.output;
     result = RunCli("demo --seconds 86400 --audio " + (dir / "long.wav").string());
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(result.output.find("--audio: a WAV file holds at most"), std::string::npos) << result.output;
     EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// --audio writes a WAV: a name that says otherwise (a WAV called .mp3) is refused before the run, by
+// every command that takes it.
+TEST(CliSound, AudioThatIsNotAWavIsRefused)
+{
+    const std::filesystem::path dir = ScratchDir("sound_extension");
+    const std::string mp3 = (dir / "a.mp3").string();
+    for (const std::string& command : std::vector<std::string>{
+             "demo --seconds 0.2", "run --scene grinder --seconds 0.2",
+             "render --demo --seconds 0.2 --width 48 --height 32 --out " + (dir / "f.png").string()})
+    {
+        const CliResult result = RunCli(command + " --audio " + mp3);
+        EXPECT_EQ(result.exitCode, 1) << command << "\n" << result.output;
+        EXPECT_NE(result.output.find("--audio: expected a .wav file, found \"" + mp3 + "\""),
+                  std::string::npos)
+            << command << "\n"
+            << result.output;
+        EXPECT_TRUE(std::filesystem::is_empty(dir)) << command;
+    }
+    // Any case of .wav is a WAV.
+    const CliResult upper = RunCli("demo --seconds 0.2 --audio " + (dir / "A.WAV").string());
+    EXPECT_EQ(upper.exitCode, 0) << upper.output;
 }
 
 } // namespace cfx::test

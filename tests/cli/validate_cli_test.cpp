@@ -305,7 +305,29 @@ TEST(CliValidate, ScenesAreCheckedAgainstTheSelectedEffectsConfig)
     EXPECT_EQ(broken.exitCode, 1);
     const std::map<std::string, nlohmann::json> reports = JsonLines(broken.output);
     EXPECT_TRUE(HasError(reports.at((dir / "broken.effects.json").string()), "budget.capacity", "expected"));
-    EXPECT_EQ(reports.at(glass)["ok"], true) << "structure checked without a config";
+    // The scene's structure is checked, but not its materials: not "ok", and it says why.
+    EXPECT_EQ(reports.at(glass)["ok"], false) << broken.output;
+    EXPECT_TRUE(HasError(reports.at(glass), "", "materials not checked")) << broken.output;
+}
+
+// The text report of a scene checked without its effects config: not "ok" with "0 with a material".
+TEST(CliValidate, AFailedEffectsConfigLeavesTheSceneNotChecked)
+{
+    const std::filesystem::path dir = ScratchDir("validate_effects_failed");
+    nlohmann::json config = nlohmann::json::parse(FileText(Scene("default.effects.json")));
+    config["particleTypes"][0]["gravityScale"] = "nan";
+    WriteTestFile(dir / "bad.effects.json", config.dump());
+    const std::string grinder = Scene("grinder.json");
+    const CliResult result =
+        RunCli("validate --effects " + (dir / "bad.effects.json").string() + " " + grinder);
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_EQ(result.output.find(grinder + ": ok"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(grinder + ": materials not checked: the effects config \"" +
+                                 (dir / "bad.effects.json").string() + "\" (--effects) has problems"),
+              std::string::npos)
+        << result.output;
+    // The same scene with a good config is ok.
+    EXPECT_EQ(RunCli("validate " + grinder).exitCode, 0);
 }
 
 // Issue 15: a config with seven independent problems reports all seven, each with its path.

@@ -235,6 +235,17 @@ TEST(ConfigFields, EveryFieldRoundTripsThroughJson)
                 }
                 EffectsConfig config = base;
                 SetOtherValue(Slot<S>::In(config), field);
+                // A sound rule must name the materials of a pair rule (Validate): the two change together.
+                if constexpr (std::is_same_v<S, RuleDef>)
+                {
+                    config.sound.rules[0].materialA = config.rules[0].materialA;
+                    config.sound.rules[0].materialB = config.rules[0].materialB;
+                }
+                else if constexpr (std::is_same_v<S, SoundRuleDef>)
+                {
+                    config.rules[0].materialA = config.sound.rules[0].materialA;
+                    config.rules[0].materialB = config.sound.rules[0].materialB;
+                }
                 ASSERT_NE(config, base) << field.name;
                 ASSERT_TRUE(Validate(config).empty()) << field.name << ": " << Validate(config)[0].message;
                 const std::string json = SaveEffectsString(config);
@@ -482,9 +493,10 @@ void DocRows(std::span<const Field<S>> fields, const S& defaults, const std::str
                     static constexpr const char* kRules[] = {"text", "unique, non-empty", "non-empty glob",
                                                              "a material name", "a particle type name"};
                     values = kRules[static_cast<int>(field.text)];
-                    byDefault = (defaults.*member).empty() && field.text != TextRule::any
-                                    ? "(required)"
-                                    : Quoted(defaults.*member);
+                    // What the reader requires (IsRequired) has no default to show.
+                    EXPECT_EQ(IsRequired(field), (defaults.*member).empty() && field.text != TextRule::any)
+                        << field.name;
+                    byDefault = IsRequired(field) ? "(required)" : Quoted(defaults.*member);
                 }
                 else if constexpr (std::is_same_v<M, std::uint16_t S::*> ||
                                    std::is_same_v<M, std::uint32_t S::*>)

@@ -1,3 +1,4 @@
+#include "contactfx/config_fields.h"
 #include "contactfx/files/text_file.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
@@ -5,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace cfx
 {
@@ -29,6 +31,25 @@ std::vector<std::string> PathsOf(const std::string& json)
         return paths;
     }
     return {};
+}
+
+// Every problem as "path: message".
+std::vector<std::string> ProblemsOf(const std::string& json)
+{
+    std::vector<std::string> lines;
+    try
+    {
+        LoadEffectsString(json, "fx.json");
+    }
+    catch (const InputError& error)
+    {
+        for (const Diagnostic& problem : error.Diagnostics())
+        {
+            EXPECT_EQ(problem.file, "fx.json");
+            lines.push_back(problem.path + ": " + problem.message);
+        }
+    }
+    return lines;
 }
 
 } // namespace
@@ -94,15 +115,16 @@ TEST(EffectsJson, SemanticProblemsUseJsonPaths)
 // problems of issue 15 are all reported, each with its path.
 TEST(EffectsJson, ReadingAndSemanticProblemsAreReportedTogether)
 {
-    EXPECT_EQ(PathsOf(R"({"materials": ["steel", "stone"],
+    EXPECT_EQ(
+        PathsOf(R"({"materials": ["steel", "stone"],
         "particleTypes": [{"name": "sparks", "lifetime": 0, "drag": -1, "radus": 0.1}],
         "rules": [{"materialA": "steel", "materialB": "stone", "particleType": "sparks", "threshold": -1},
                   {"materialA": "steel", "materialB": "steel", "particleType": "smoke"},
                   {"materialA": "stone", "materialB": "glass", "particleType": "sparks"}],
         "budget": {"capacity": 0}})"),
-              (std::vector<std::string>{"particleTypes[0].radus", "particleTypes[0].lifetime",
-                                        "particleTypes[0].drag", "rules[0].threshold",
-                                        "rules[1].particleType", "rules[2].materialB", "budget.capacity"}));
+        (std::vector<std::string>{"particleTypes[0].radus", "budget.capacity", "particleTypes[0].lifetime",
+                                  "particleTypes[0].drag", "rules[0].threshold", "rules[1].particleType",
+                                  "rules[2].materialB"}));
     // A bad element keeps the indices of the ones after it, and what it breaks is reported once.
     EXPECT_EQ(PathsOf(R"({"materials": ["a"], "particleTypes": [3, {"name": "p", "radius": -1}]})"),
               (std::vector<std::string>{"particleTypes[0]", "particleTypes[1].radius"}));
@@ -164,6 +186,138 @@ TEST(EffectsJson, HugeNumbersAreOutOfRange)
     EXPECT_TRUE(problemsOf(R"(, "radius": 10, "gravityScale": -100, "normalSpeed": 1000, "lifetime": 3600)",
                            R"(, "ratePerIntensity": 1e6, "maxRate": 1e5, "burstMax": 1e5)")
                     .empty());
+}
+
+// A required name left out is reported as missing, not as an unknown name "", and every one at once: a rule
+// without a particle type used to match a particle type without a name and went unreported.
+TEST(EffectsJson, MissingRequiredFieldsAreReportedAsMissing)
+{
+    EXPECT_EQ(ProblemsOf(R"({"materials": ["a", "b"], "particleTypes": [{"lifetime": 2}],
+        "rules": [{"materialA": "a"}], "assignments": [{"bodyType": "static"}]})"),
+              (std::vector<std::string>{
+                  "particleTypes[0].name: expected a non-empty name, but the required field is missing",
+                  "rules[0].materialB: expected a material name, but the required field is missing",
+                  "rules[0].particleType: expected a particle type name, but the required field is missing",
+                  "assignments[0].material: expected a material name, but the required field is missing"}));
+    // Given but empty: never a match, even for an entry that has no name (itself an error).
+    EXPECT_EQ(ProblemsOf(R"({"materials": ["a"], "particleTypes": [{"name": ""}],
+        "rules": [{"materialA": "a", "materialB": "", "particleType": ""}]})"),
+              (std::vector<std::string>{"particleTypes[0].name: expected a non-empty name",
+                                        "rules[0].materialB: expected a material name, found \"\"",
+                                        "rules[0].particleType: expected a particle type name, found \"\""}));
+}
+
+// Every required field of every table (IsRequired), left out of an otherwise empty object.
+TEST(EffectsJson, EveryRequiredFieldIsReportedWhenMissing)
+{
+    std::vector<std::string> expected;
+    auto required = [&](const std::string& at, auto fields)
+    {
+        for (const auto& field : fields)
+        {
+            if (IsRequired(field))
+            {
+                expected.push_back(at + "." + std::string(field.name) + ": expected " +
+                                   std::string(ExpectedText(field.text)) +
+                                   ", but the required field is missing");
+            }
+        }
+    };
+    required("particleTypes[0]", ParticleTypeFields());
+    required("rules[0]", RuleFields());
+    required("assignments[0]", AssignmentFields());
+    required("sound.rules[0]", SoundRuleFields());
+    ASSERT_EQ(expected.size(),
+              7u); // a particle type's name, two materials per rule, a particle type, a material
+    EXPECT_EQ(ProblemsOf(R"({"materials": ["a"], "particleTypes": [{}], "rules": [{}], "assignments": [{}],
+        "sound": {"rules": [{}]}})"),
+              expected);
+}
+
+// budget.capacity said "an integer between 0 and 1073741824" for some wrong values and "[1, 4000000]" (the
+// documented range) for others: every wrong value of an integer field now gets the documented range.
+TEST(EffectsJson, IntegerFieldsStateTheirDocumentedRangeForEveryWrongValue)
+{
+    auto withCapacity = [](const std::string& capacity)
+    { return R"({"materials": ["a"], "budget": {"capacity": )" + capacity + "}}"; };
+    for (const std::string value : {"-5", "0", "5000000", "2000000000", "18446744073709551615", "1.5"})
+    {
+        EXPECT_EQ(
+            ProblemsOf(withCapacity(value)),
+            (std::vector<std::string>{"budget.capacity: expected a number in [1, 4000000], found " + value}));
+    }
+    EXPECT_EQ(ProblemsOf(withCapacity("1e20")),
+              (std::vector<std::string>{"budget.capacity: expected a number in [1, 4000000], found 1e+20"}));
+    EXPECT_EQ(ProblemsOf(withCapacity("\"many\"")),
+              (std::vector<std::string>{
+                  "budget.capacity: expected a number in [1, 4000000], found string \"many\""}));
+    // The bounds and a whole number written as a float are fine; Validate says the same for API values.
+    EXPECT_EQ(LoadEffectsString(withCapacity("4000000"), "x").budget.capacity, 4000000u);
+    EXPECT_EQ(LoadEffectsString(withCapacity("1"), "x").budget.capacity, 1u);
+    EXPECT_EQ(LoadEffectsString(withCapacity("2.0"), "x").budget.capacity, 2u);
+    EffectsConfig config;
+    config.budget.capacity = 0;
+    ASSERT_EQ(Validate(config).size(), 1u);
+    EXPECT_EQ(Validate(config)[0].message, "expected a number in [1, 4000000], found 0");
+
+    // Every integer field of every table: just outside its range, either side.
+    const nlohmann::json preset = nlohmann::json::parse(SaveEffectsString(DefaultPreset()));
+    int checked = 0;
+    auto outside = [&]<typename S>(std::span<const Field<S>> fields, auto locate)
+    {
+        for (const Field<S>& field : fields)
+        {
+            if (!std::holds_alternative<std::uint32_t S::*>(field.member) &&
+                !std::holds_alternative<std::uint16_t S::*>(field.member))
+            {
+                continue;
+            }
+            for (const long long value :
+                 {static_cast<long long>(field.range.min) - 1, static_cast<long long>(field.range.max) + 1})
+            {
+                nlohmann::json root = preset;
+                locate(root)[std::string(field.name)] = value;
+                const std::vector<std::string> problems = ProblemsOf(root.dump());
+                ASSERT_EQ(problems.size(), 1u) << field.name << " = " << value;
+                EXPECT_NE(problems[0].find(": expected " + ExpectedInteger(field.range) + ", found " +
+                                           std::to_string(value)),
+                          std::string::npos)
+                    << problems[0];
+                ++checked;
+            }
+        }
+    };
+    outside(ParticleTypeFields(),
+            [](nlohmann::json& root) -> nlohmann::json& { return root["particleTypes"][0]; });
+    outside(BudgetFields(), [](nlohmann::json& root) -> nlohmann::json& { return root["budget"]; });
+    outside(SoundFields(), [](nlohmann::json& root) -> nlohmann::json& { return root["sound"]; });
+    EXPECT_EQ(checked,
+              2 * 7); // categoryBits, maskBits; capacity, contacts, particleHits; maxVoices, trackedPairs
+}
+
+// A sound rule tunes the voices of the pair rule with its two materials (docs/sound.md): one for a pair that
+// no rule makes particles for would never apply.
+TEST(EffectsJson, ASoundRuleForAPairWithoutARuleIsAnError)
+{
+    const std::string config = R"({"materials": ["steel", "stone"], "particleTypes": [{"name": "sparks"}],
+        "rules": [{"materialA": "steel", "materialB": "stone", "particleType": "sparks"}], "sound": {"rules": [
+            {"materialA": "stone", "materialB": "steel"}, {"materialA": "steel", "materialB": "steel"},
+            {"materialA": "steel", "materialB": "glass"}]}})";
+    EXPECT_EQ(ProblemsOf(config),
+              (std::vector<std::string>{"sound.rules[1]: no rule for the pair steel+steel in \"rules\": this "
+                                        "sound rule would never apply",
+                                        "sound.rules[2].materialB: unknown material \"glass\""}));
+}
+
+// nlohmann keeps the last of a repeated key: the first would silently do nothing.
+TEST(EffectsJson, DuplicateKeysAreErrorsWithTheirPath)
+{
+    EXPECT_EQ(
+        ProblemsOf(R"({"name": "x", "name": "y", "materials": ["a"],
+        "particleTypes": [{"name": "p"}, {"name": "q", "radius": 0.1, "radius": 0.2}]})"),
+        (std::vector<std::string>{
+            "name: duplicate key \"name\": each key may appear once in an object",
+            "particleTypes[1].radius: duplicate key \"radius\": each key may appear once in an object"}));
 }
 
 TEST(EffectsJson, MalformedJsonHasLineAndColumn)
@@ -265,6 +419,24 @@ TEST(AssignmentValidate, ApiValuesAreCheckedToo)
     }
     EXPECT_EQ(paths, (std::vector<std::string>{"assignments[1].frictionAbove", "assignments[2].bodyType",
                                                "assignments[3].material"}));
+}
+
+// An empty particle type name in code is not a match for a particle type without a name.
+TEST(ConfigValidate, EmptyNamesMatchNothing)
+{
+    EffectsConfig config;
+    config.materials = {"a"};
+    config.particleTypes.push_back(ParticleTypeDef{});
+    RuleDef rule;
+    rule.materialA = "a";
+    rule.materialB = "a";
+    config.rules.push_back(rule);
+    std::vector<std::string> paths;
+    for (const Diagnostic& problem : Validate(config))
+    {
+        paths.push_back(problem.path);
+    }
+    EXPECT_EQ(paths, (std::vector<std::string>{"particleTypes[0].name", "rules[0].particleType"}));
 }
 
 } // namespace cfx

@@ -139,6 +139,25 @@ TEST(JsonText, ReportsLineAndColumnOfMalformedJson)
     EXPECT_GT(overflow.Items()[0].column, 0);
 }
 
+// A repeated key is reported under its JSON path (nlohmann would keep the last value silently); the
+// document is still built, so that the reader goes on and reports the other problems too.
+TEST(JsonText, ReportsDuplicateKeysWithTheirPath)
+{
+    DiagnosticList diagnostics("f.json");
+    const std::optional<Json> document = ParseJsonText(
+        R"({"a": [1, {"b": {"c": 1, "c": 2}}], "d": [{"k": 1}, {"k": 2}], "a": 3})", diagnostics);
+    ASSERT_TRUE(document.has_value());
+    ASSERT_EQ(diagnostics.Size(), 2u);
+    EXPECT_EQ(diagnostics.Items()[0].path, "a[1].b.c");
+    EXPECT_EQ(diagnostics.Items()[0].message, "duplicate key \"c\": each key may appear once in an object");
+    EXPECT_EQ(diagnostics.Items()[0].file, "f.json");
+    EXPECT_EQ(diagnostics.Items()[1].path, "a");
+
+    DiagnosticList none("f.json"); // the same key in different objects, nested or side by side, is fine
+    EXPECT_TRUE(ParseJsonText(R"({"k": {"k": [{"k": 1}, {"k": 2}]}})", none).has_value());
+    EXPECT_TRUE(none.Empty());
+}
+
 TEST(JsonText, PositionOfOffset)
 {
     const std::string text = "ab\ncd\n\nef";

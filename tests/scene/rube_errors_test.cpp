@@ -347,6 +347,16 @@ TEST(RubeErrors, SeveralErrorsAreAllReported)
     }
 }
 
+// RUBE never writes a key twice; a hand-edited scene that does is told where, not loaded with the last one.
+TEST(RubeErrors, DuplicateKeysAreErrors)
+{
+    auto diagnostics = LoadErrors(World(Box(0.0f) + ", " + Box(2.0f, 2, R"("angle": 0, "angle": 1)")));
+    ASSERT_EQ(diagnostics.size(), 1u) << test::Dump(diagnostics);
+    EXPECT_EQ(diagnostics[0].path, "body[1].angle");
+    EXPECT_EQ(diagnostics[0].message, "duplicate key \"angle\": each key may appear once in an object");
+    EXPECT_EQ(diagnostics[0].file, "test.json");
+}
+
 TEST(RubeErrors, ValidateReportsWithoutThrowing)
 {
     SceneCounts counts;

@@ -45,9 +45,8 @@ TEST(RubeFormat, HexFloatsEverywhere)
 
 TEST(RubeFormat, ZeroVectorShorthand)
 {
-    Scene scene = LoadRubeString(World(R"({"type": 2, "position": 0, "linearVelocity": 0, "awake": true,
-        "fixture": [{"density": 1, "circle": {"radius": 1, "center": 0}}]})",
-                                       "", R"("gravity": 0)"),
+    Scene scene = LoadRubeString(R"({"gravity": 0, "body": [{"type": 2, "position": 0, "linearVelocity": 0,
+        "awake": true, "fixture": [{"density": 1, "circle": {"radius": 1, "center": 0}}]}]})",
                                  "zero.json");
     EXPECT_EQ(scene.bodies.at(0).body->GetPosition(), b2Vec2(0.0f, 0.0f));
     EXPECT_EQ(scene.world->GetGravity(), b2Vec2(0.0f, 0.0f));

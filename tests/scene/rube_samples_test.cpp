@@ -100,10 +100,18 @@ TEST_P(RubeSample, LoadsAndMatchesItsJson)
         }
 
         const auto& fixturesJson = bodyJson.value("fixture", nlohmann::json::array());
+        // Each of the file's fixtures, and the back side of each one-sided one (SceneFixture::backSide).
         int fixturesOnBody = 0;
         for (b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext())
         {
-            ++fixturesOnBody;
+            const SceneFixture* owner = scene.FindFixture(f);
+            ASSERT_NE(owner, nullptr);
+            fixturesOnBody += owner->backSide == f ? 0 : 1;
+            const b2Shape::Type type = owner->fixture->GetShape()->GetType();
+            const bool oneSided = type == b2Shape::e_chain ||
+                                  (type == b2Shape::e_edge &&
+                                   static_cast<const b2EdgeShape*>(owner->fixture->GetShape())->m_oneSided);
+            EXPECT_EQ(owner->backSide != nullptr, oneSided);
         }
         ASSERT_EQ(fixturesOnBody, static_cast<int>(fixturesJson.size()));
         for (std::size_t f = 0; f < fixturesJson.size(); ++f, ++fixtureIndex)

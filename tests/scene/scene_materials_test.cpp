@@ -130,10 +130,9 @@ TEST(SceneMaterials, PropertyTakesPrecedenceAndNamesAreMatched)
 {
     const std::string bodies =
         test::Box(0.0f, 2, R"("name": "crate")") + "," +
-        test::Box(
-            3.0f, 2,
-            R"("name": "crate", "fixture": [{"name": "lid", "density": 1, "friction": 0.5, "customProperties":
-                      [{"name": "material", "string": "a"}], "circle": {"radius": 1}}])") +
+        R"({"type": 2, "position": {"x": 3, "y": 0}, "awake": true, "name": "crate", "fixture": [{"name": "lid",
+            "density": 1, "friction": 0.5, "customProperties": [{"name": "material", "string": "a"}],
+            "circle": {"radius": 1}}]})" +
         "," + test::Box(6.0f, 0, R"("name": "floor")");
     const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
     EffectsConfig config;
@@ -145,12 +144,31 @@ TEST(SceneMaterials, PropertyTakesPrecedenceAndNamesAreMatched)
     EXPECT_EQ(MaterialNames(scene, config), (std::vector<std::string>{"b", "a", "none"}));
 }
 
+// A chain's back side (the reversed chain that makes it two-sided, see SceneFixture::backSide) is the same
+// surface: it gets the chain's material, so that a body on either side makes the same effects.
+TEST(SceneMaterials, AChainsBackSideGetsTheChainsMaterial)
+{
+    const Scene scene =
+        LoadRubeString(test::World(R"({"type": 0, "fixture": [{"name": "road", "customProperties":
+        [{"name": "material", "string": "b"}], "chain": {"vertices": {"x": [-5, 0, 5], "y": [0, 0, 0]}}}]})"),
+                       "scene.json");
+    ASSERT_EQ(scene.fixtures.size(), 1u);
+    ASSERT_NE(scene.fixtures[0].backSide, nullptr);
+    EffectsConfig config = TutorialPreset();
+    config.materials.push_back("b");
+    Effects effects(*scene.world, EffectsDef{config});
+    AssignSceneMaterials(scene, effects, "scene.json");
+    const MaterialId road = effects.Material(scene.fixtures[0].fixture);
+    ASSERT_TRUE(road.IsValid());
+    EXPECT_EQ(effects.Material(scene.fixtures[0].backSide), road);
+}
+
 TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
 {
     const std::string bodies =
-        test::Box(0.0f, 2, R"("fixture": [{"density": 1, "customProperties": [{"name": "material", "string":
-            "glass"}], "circle": {"radius": 1}}, {"density": 1, "customProperties": [{"name": "x", "int": 1},
-            {"name": "material", "int": 4}], "circle": {"radius": 1}}])");
+        R"({"type": 2, "position": 0, "awake": true, "fixture": [{"density": 1, "customProperties": [{"name":
+            "material", "string": "glass"}], "circle": {"radius": 1}}, {"density": 1, "customProperties": [{"name":
+            "x", "int": 1}, {"name": "material", "int": 4}], "circle": {"radius": 1}}]})";
     const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
     const std::vector<Diagnostic> problems = ResolveErrors(scene, TutorialPreset());
     EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",

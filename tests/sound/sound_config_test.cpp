@@ -57,10 +57,10 @@ TEST(SoundConfig, BadValuesAreErrorsWithTheirJsonPath)
     });
     const std::vector<std::string> expected = {
         "sound.gian: unknown field, did you mean `gain`?",
+        "sound.maxVoices: expected a number in [1, 4096], found 0",
         "sound.rules[0].timbre: expected one of \"auto\", \"hiss\", \"squeal\", \"rumble\", found "
         "string \"whistle\"",
         "sound.rules[1].release: expected a number, found string \"long\"",
-        "sound.maxVoices: expected a number in [1, 4096], found 0",
         "sound.impactMergeWindow: expected a number between 0 and 10, found -0.01",
         "sound.rules[0].scrapeStart: expected a number between 0 and 1, found 1.5",
         "sound.rules[1]: a second sound rule for the pair concrete+steel",

@@ -2,7 +2,9 @@
 //
 // An effects config JSON holds an EffectsConfig: materials, particle types, pair rules, the particle
 // budget. Field names are the struct members' names (docs/effects-config.md). Missing fields take the
-// struct's defaults; unknown fields are errors (a typo must not silently do nothing). Every problem is
+// struct's defaults, except required ones (IsRequired: names, a rule's materials and particle type), which
+// are errors; unknown fields and keys repeated in one object are errors (a typo must not silently do
+// nothing), and so is a sound rule for a material pair without a pair rule. Every problem is
 // reported with file, JSON path, expected and found, and line and column for malformed JSON.
 #pragma once
 

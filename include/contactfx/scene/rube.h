@@ -56,6 +56,12 @@ struct SceneBody
 struct SceneFixture
 {
     b2Fixture* fixture = nullptr;
+    /// RUBE scenes are Box2D 2.3 scenes, where chains and edges with ghost vertices collide on both sides;
+    /// Box2D 2.4 makes them one-sided. Such a fixture therefore gets a second fixture on its body, the same
+    /// shape reversed (same friction, restitution, density, filter, sensor flag, material): together they
+    /// collide on both sides, smoothly. Null for every other shape. The writer saves the pair as the one
+    /// fixture of the file.
+    b2Fixture* backSide = nullptr;
     int bodyIndex = -1; ///< index into Scene::bodies
     std::string name;
     CustomProperties properties;
@@ -122,7 +128,7 @@ public:
     const SceneBody* FindBody(std::string_view name) const;
     const SceneFixture* FindFixture(std::string_view name) const;
     const SceneJoint* FindJoint(std::string_view name) const;
-    /// The entry of a Box2D object created by this scene, or nullptr.
+    /// The entry of a Box2D object created by this scene (of a fixture or its back side), or nullptr.
     const SceneFixture* FindFixture(const b2Fixture* fixture) const;
     const SceneBody* FindBody(const b2Body* body) const;
     const SceneJoint* FindJoint(const b2Joint* joint) const;
