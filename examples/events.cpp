@@ -62,6 +62,8 @@ const char* EndReason(cfx::ScrapeEnd end)
         return "below threshold";
     case cfx::ScrapeEnd::destroyed:
         return "destroyed";
+    case cfx::ScrapeEnd::stopped:
+        return "stopped";
     case cfx::ScrapeEnd::none:
         break;
     }

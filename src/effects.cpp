@@ -230,9 +230,20 @@ void Effects::Step(float dt)
     m_stats.nonFinite = m_particles.Counters().nonFinite;
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
     m_stats.staleMaterials = m_internals->materials.Stale();
+    NotifyListener();
+}
+
+void Effects::EndScrapes()
+{
+    m_internals->events.EndAll(ScrapeEnd::stopped);
+    NotifyListener();
+}
+
+void Effects::NotifyListener()
+{
     if (m_eventListener != nullptr)
     {
-        for (const EffectEvent& event : events.Events())
+        for (const EffectEvent& event : m_internals->events.Events())
         {
             m_eventListener->OnEffectEvent(event);
         }

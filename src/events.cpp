@@ -1,5 +1,7 @@
 #include "events.h"
 
+#include <algorithm>
+
 namespace cfx::detail
 {
 
@@ -25,6 +27,20 @@ void EventTracker::ParticleHits(std::span<const ParticleHitGroup> groups)
         event.particleType = group.type;
         event.count = group.count;
     }
+}
+
+void EventTracker::EndAll(ScrapeEnd reason)
+{
+    m_events.clear(); // holds a step's scrape ends and more, so never grows here
+    for (ScrapeState& scrape : m_scrapes)
+    {
+        if (scrape.id != 0)
+        {
+            End(scrape, reason, scrape.fixtureA, scrape.fixtureB);
+        }
+    }
+    std::sort(m_events.begin(), m_events.end(),
+              [](const EffectEvent& a, const EffectEvent& b) { return a.id < b.id; });
 }
 
 EventTracker::ScrapeState& EventTracker::StateOf(std::uint32_t slot)

@@ -104,6 +104,9 @@ public:
 
     /// Appends a particleHits event per group, in order (after the step's contact events).
     void ParticleHits(std::span<const ParticleHitGroup> groups);
+    /// Ends every open scrape with `reason`: the events become one scrapeEnded per open scrape, in id
+    /// order (stamped with the last step). Allocation-free.
+    void EndAll(ScrapeEnd reason);
 
     /// The events of this step so far, in order. Valid until the next BeginStep.
     std::span<const EffectEvent> Events() const { return m_events; }

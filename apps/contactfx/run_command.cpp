@@ -126,7 +126,7 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
         if (events)
         {
             // The scrapes still open end with the run: every scrape_began has its scrape_ended.
-            for (const EffectEvent& event : simulation.OpenScrapesEnded())
+            for (const EffectEvent& event : simulation.EndScrapes())
             {
                 outputs.Append(*events, EventJsonLine(event, simulation.GetEffects().Config(), options.hz));
             }

@@ -35,7 +35,6 @@ Simulation::Simulation(const SimulationDef& def)
     m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
     AssignSceneMaterials(m_scene, *m_effects, def.scene.string());
     m_car = Car::Find(m_scene);
-    ResetOpenScrapes();
 }
 
 Simulation::~Simulation() = default;
@@ -61,63 +60,12 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
     m_effects.reset();
     m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
     AssignSceneMaterials(m_scene, *m_effects, m_sceneFile);
-    ResetOpenScrapes(); // the old effects' scrapes are gone with them; the new ids start afresh
 }
 
-void Simulation::ResetOpenScrapes()
+std::span<const EffectEvent> Simulation::EndScrapes()
 {
-    m_openScrapes.clear();
-    m_openScrapes.reserve(m_effects->Config().budget.contacts);
-}
-
-void Simulation::FollowScrapes(std::span<const EffectEvent> events)
-{
-    for (const EffectEvent& event : events)
-    {
-        if (event.type != EffectEventType::scrapeBegan && event.type != EffectEventType::scrapeChanged &&
-            event.type != EffectEventType::scrapeEnded)
-        {
-            continue;
-        }
-        const auto open = std::find_if(m_openScrapes.begin(), m_openScrapes.end(),
-                                       [&](const EffectEvent& scrape) { return scrape.id == event.id; });
-        if (event.type == EffectEventType::scrapeEnded)
-        {
-            if (open != m_openScrapes.end())
-            {
-                *open = m_openScrapes.back();
-                m_openScrapes.pop_back();
-            }
-        }
-        else if (open != m_openScrapes.end())
-        {
-            *open = event;
-        }
-        else
-        {
-            m_openScrapes.push_back(event);
-        }
-    }
-}
-
-std::vector<EffectEvent> Simulation::OpenScrapesEnded() const
-{
-    std::vector<EffectEvent> ended;
-    ended.reserve(m_openScrapes.size());
-    for (const EffectEvent& last : m_openScrapes)
-    {
-        EffectEvent end = last;
-        end.type = EffectEventType::scrapeEnded;
-        end.end = ScrapeEnd::none;
-        end.step = m_effects->Stats().steps - 1; // there is an open scrape only after a step
-        end.intensity = 0.0f;
-        end.tangentialSpeed = 0.0f;
-        end.normalImpulse = 0.0f;
-        ended.push_back(end);
-    }
-    std::sort(ended.begin(), ended.end(),
-              [](const EffectEvent& a, const EffectEvent& b) { return a.id < b.id; });
-    return ended;
+    m_effects->EndScrapes();
+    return m_effects->Events();
 }
 
 void Simulation::Step()
@@ -139,7 +87,6 @@ void Simulation::Step()
     const Clock::time_point stepped = Clock::now();
     m_effects->Step(m_dt);
     m_events.Add(m_effects->Events());
-    FollowScrapes(m_effects->Events());
     m_times.worldMs = std::chrono::duration<double, std::milli>(stepped - start).count();
     m_times.effectsMs = std::chrono::duration<double, std::milli>(Clock::now() - stepped).count();
     ++m_steps;
@@ -162,9 +109,9 @@ std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config,
     using Json = nlohmann::ordered_json;
     static constexpr const char* kTypes[] = {"scrape_began", "scrape_changed", "scrape_ended", "impact",
                                              "particle_hits"};
-    // ScrapeEnd::none on a scrapeEnded event: one of Simulation::OpenScrapesEnded.
-    static constexpr const char* kReasons[] = {"run_ended", "contact_ended", "asleep", "below_threshold",
-                                               "destroyed"};
+    // ScrapeEnd::stopped: the run stopped (Simulation::EndScrapes).
+    static constexpr const char* kReasons[] = {"none",      "contact_ended", "asleep", "below_threshold",
+                                               "destroyed", "run_ended"};
     Json line;
     line["type"] = kTypes[static_cast<int>(event.type)];
     line["step"] = event.step;

@@ -72,17 +72,13 @@ public:
     const Effects& GetEffects() const { return *m_effects; }
     const std::optional<Car>& GetCar() const { return m_car; }
     /// The run's hash (state_hash.h): every event reported since the start (or the last ReplaceEffects),
-    /// then the live particles now. The events of OpenScrapesEnded() are not in it.
+    /// then the live particles now. The events of EndScrapes() are not in it.
     StateHash RunHash() const;
 
-    /// What ends the run's scrapes when it stops here: one scrapeEnded event for every scrape that began
-    /// and has not ended (since the start, or the last ReplaceEffects), in id order (the order they began).
-    /// Each carries the scrape's id, rule, materials, fixtures, point and normal as last reported, the
-    /// step of the last Step() (so its time is Time()) and end == ScrapeEnd::none: the library ends a
-    /// scrape only while it steps, and has no reason for "the application stopped stepping";
-    /// EventJsonLine writes it as "reason": "run_ended". Changes nothing: stepping on is allowed, and the
-    /// library then goes on reporting these scrapes. Empty before the first Step().
-    std::vector<EffectEvent> OpenScrapesEnded() const;
+    /// Ends the scrapes still going as the run stops (Effects::EndScrapes): their scrapeEnded events,
+    /// reason ScrapeEnd::stopped, in id order, at the last step (so their time is Time()). Valid until the
+    /// next Step(); empty before the first.
+    std::span<const EffectEvent> EndScrapes();
 
 private:
     Scene m_scene;
@@ -97,12 +93,6 @@ private:
     std::uint64_t m_steps = 0;
     StepTimes m_times;
     StateHash m_events; // every event so far
-    // The last scrapeBegan or scrapeChanged of each scrape not ended yet, in no order; reserved for
-    // budget.contacts scrapes, so that Step() does not allocate while no more are open at once.
-    std::vector<EffectEvent> m_openScrapes;
-
-    void FollowScrapes(std::span<const EffectEvent> events);
-    void ResetOpenScrapes();
 };
 
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
@@ -116,7 +106,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
 /// scrape_changed, scrape_ended, impact), "step", "time" (s simulated when reported), "id", "pair"
 /// ("A+B", names sorted), "point": [x, y], "normal": [x, y], then "intensity", "tangential_speed",
 /// "normal_impulse" for scrapes, "reason" for ended scrapes ("contact_ended", "asleep",
-/// "below_threshold", "destroyed", or "run_ended" for those of Simulation::OpenScrapesEnded),
+/// "below_threshold", "destroyed", or "run_ended" for those of Simulation::EndScrapes),
 /// "approach_speed", "normal_impulse" for impacts}; particle hits: {"type": "particle_hits", "step", "time",
 /// "particle_type" (its name), "count", "point": [x, y] (their mean touch point), "mean_speed" (m/s)}.
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz);

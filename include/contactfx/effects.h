@@ -92,9 +92,16 @@ public:
     /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the
     /// world's gravity is not finite; nothing changes then.
     void Step(float dt);
+    /// Ends every scrape going on, for an application that stops stepping (a level ends, the game
+    /// quits): Events() then holds one scrapeEnded per open scrape, reason ScrapeEnd::stopped, in id
+    /// order, with the scrape's last point and normal and the last step's number, and the event listener
+    /// gets them. So every scrapeBegan has its scrapeEnded, and a sound looping on a scrape stops. Nothing
+    /// else changes: a contact still scraping at the next Step begins a new scrape, with a new id.
+    void EndScrapes();
 
     const EffectsStats& Stats() const { return m_stats; }
-    /// The scrape and impact events of the last Step, in order (events.h). Valid until the next Step.
+    /// The scrape and impact events of the last Step (or EndScrapes), in order (events.h). Valid until
+    /// the next Step or EndScrapes.
     std::span<const EffectEvent> Events() const;
     ParticleView Particles() const { return m_particles.View(); }
     const EffectsConfig& Config() const { return m_config; }
@@ -103,7 +110,8 @@ public:
 
 private:
     friend struct detail::EffectsAccess; // the library's own tests and tools (src/effects_access.h)
-    struct Internals; // materials table, contact tracker, listeners, emitter, event tracker
+    struct Internals;      // materials table, contact tracker, listeners, emitter, event tracker
+    void NotifyListener(); // gives the event listener every event of Events()
 
     b2World& m_world;
     EffectsConfig m_config;

@@ -46,6 +46,7 @@ enum class ScrapeEnd : std::uint8_t
     asleep,         ///< a body fell asleep
     belowThreshold, ///< intensity at or below the threshold for scrapeEndDelay
     destroyed,      ///< a fixture or body was destroyed
+    stopped,        ///< the application ended it: Effects::EndScrapes (it stops stepping)
 };
 
 /// One event. Fields that do not apply to a type are zero (invalid ids for a particle hit's rule and

@@ -148,6 +148,40 @@ TEST(Events, ScrapeEndsWhenTheContactEnds)
     EXPECT_EQ(events.front().type, EffectEventType::scrapeEnded) << "ends from callbacks come first";
 }
 
+// An application that stops stepping ends its scrapes (Effects::EndScrapes): a scrapeEnded each, reason
+// stopped, through Events() and the listener; a contact still scraping at the next Step begins anew.
+TEST(Events, EndScrapesEndsEveryOpenScrapeOnceAndTheNextStepBeginsANewOne)
+{
+    ScrapeScene scene;
+    scene.StepPlain(30);
+    const std::vector<EffectEvent> sliding = scene.Slide(4.0f, 10);
+    const std::vector<EffectEvent> began = OfType(sliding, EffectEventType::scrapeBegan);
+    ASSERT_EQ(began.size(), 1u);
+    const std::uint64_t lastStep = scene.effects->Stats().steps - 1;
+    scene.log.events.clear();
+
+    scene.effects->EndScrapes();
+    const std::vector<EffectEvent> ended(scene.effects->Events().begin(), scene.effects->Events().end());
+    ASSERT_EQ(ended.size(), 1u);
+    EXPECT_EQ(ended[0].type, EffectEventType::scrapeEnded);
+    EXPECT_EQ(ended[0].end, ScrapeEnd::stopped);
+    EXPECT_EQ(ended[0].id, began[0].id);
+    EXPECT_EQ(ended[0].step, lastStep);
+    EXPECT_EQ(ended[0].materialA, began[0].materialA);
+    EXPECT_EQ(ended[0].fixtureA, began[0].fixtureA);
+    ASSERT_EQ(scene.log.events.size(), 1u) << "the listener gets them too";
+    EXPECT_EQ(scene.log.events[0].id, began[0].id);
+
+    scene.effects->EndScrapes(); // nothing open any more
+    EXPECT_TRUE(scene.effects->Events().empty());
+
+    const std::vector<EffectEvent> again = scene.Slide(4.0f, 1);
+    const std::vector<EffectEvent> beganAgain = OfType(again, EffectEventType::scrapeBegan);
+    ASSERT_EQ(beganAgain.size(), 1u);
+    EXPECT_GT(beganAgain[0].id, began[0].id);
+    EXPECT_TRUE(OfType(again, EffectEventType::scrapeEnded).empty());
+}
+
 TEST(Events, ScrapeEndsWhenABodyFallsAsleep)
 {
     ScrapeScene scene;

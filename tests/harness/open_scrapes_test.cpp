@@ -1,5 +1,5 @@
-// A run's events end every scrape they begin: Simulation::OpenScrapesEnded closes the scrapes still open
-// when the run stops (the library ends a scrape only while it is stepped), as the CLI's events file does.
+// A run's events end every scrape they begin: Simulation::EndScrapes (Effects::EndScrapes) closes the
+// scrapes still open when the run stops, as the CLI's events file does.
 #include "harness/simulation.h"
 #include "scenes_dir.h"
 
@@ -32,7 +32,7 @@ std::vector<EffectEvent> RunAndClose(Simulation& simulation, int steps)
         const std::span<const EffectEvent> step = simulation.GetEffects().Events();
         events.insert(events.end(), step.begin(), step.end());
     }
-    const std::vector<EffectEvent> closing = simulation.OpenScrapesEnded();
+    const std::span<const EffectEvent> closing = simulation.EndScrapes();
     events.insert(events.end(), closing.begin(), closing.end());
     return events;
 }
@@ -75,13 +75,14 @@ TEST(OpenScrapes, TheGrinderStillScrapesAfterTwoSecondsAndItsScrapesEndAtTheRuns
     {
         simulation.Step();
     }
-    const std::vector<EffectEvent> closing = simulation.OpenScrapesEnded();
+    const std::span<const EffectEvent> ended = simulation.EndScrapes();
+    const std::vector<EffectEvent> closing(ended.begin(), ended.end());
     ASSERT_FALSE(closing.empty()); // what the fix is for: the wheel still grinds when the run stops
     for (std::size_t i = 0; i < closing.size(); ++i)
     {
         const EffectEvent& event = closing[i];
         EXPECT_EQ(event.type, EffectEventType::scrapeEnded);
-        EXPECT_EQ(event.end, ScrapeEnd::none);
+        EXPECT_EQ(event.end, ScrapeEnd::stopped);
         EXPECT_NE(event.id, 0u);
         EXPECT_TRUE(i == 0 || closing[i - 1].id < event.id) << "in id order";
         const nlohmann::json line =
@@ -91,31 +92,39 @@ TEST(OpenScrapes, TheGrinderStillScrapesAfterTwoSecondsAndItsScrapesEndAtTheRuns
         EXPECT_EQ(line["step"], simulation.Steps() - 1);
         EXPECT_DOUBLE_EQ(line["time"].get<double>(), static_cast<double>(simulation.Steps()) / 60.0);
     }
-    // Asking changes nothing: the same answer again, and stepping on reports the same scrapes.
-    EXPECT_EQ(simulation.OpenScrapesEnded().size(), closing.size());
+    // Ended: asking again ends nothing; stepping on, the wheel's scrape begins again with a new id.
+    EXPECT_TRUE(simulation.EndScrapes().empty());
     simulation.Step();
+    std::uint32_t highest = 0;
+    for (const EffectEvent& event : closing)
+    {
+        highest = std::max(highest, event.id);
+    }
+    bool began = false;
     for (const EffectEvent& event : simulation.GetEffects().Events())
     {
-        if (event.type == EffectEventType::scrapeChanged || event.type == EffectEventType::scrapeEnded)
+        EXPECT_FALSE(event.type == EffectEventType::scrapeChanged ||
+                     event.type == EffectEventType::scrapeEnded)
+            << "id " << event.id << " goes on after it ended";
+        if (event.type == EffectEventType::scrapeBegan)
         {
-            EXPECT_TRUE(std::any_of(closing.begin(), closing.end(),
-                                    [&](const EffectEvent& open) { return open.id == event.id; }))
-                << "id " << event.id;
+            EXPECT_GT(event.id, highest);
+            began = true;
         }
     }
+    EXPECT_TRUE(began);
 }
 
 TEST(OpenScrapes, NoneBeforeTheFirstStepNorRightAfterReplacingTheEffects)
 {
     Simulation simulation(GrinderFile());
-    EXPECT_TRUE(simulation.OpenScrapesEnded().empty());
+    EXPECT_TRUE(simulation.EndScrapes().empty());
     for (int i = 0; i < 120; ++i)
     {
         simulation.Step();
     }
-    ASSERT_FALSE(simulation.OpenScrapesEnded().empty());
     simulation.ReplaceEffects(simulation.GetEffects().Config());
-    EXPECT_TRUE(simulation.OpenScrapesEnded().empty());
+    EXPECT_TRUE(simulation.EndScrapes().empty()); // the old effects' scrapes went with them
 }
 
 } // namespace
