@@ -69,18 +69,18 @@ void CheckRunOptions(const RunOptions& options)
 {
     if (!std::isfinite(options.seconds) || options.seconds <= 0.0 || options.seconds > 86400.0)
     {
-        throw InputError("<command line>", "--seconds",
+        throw InputError(kCommandLine, "--seconds",
                          "expected a number in (0, 86400], found " + NumberText(options.seconds));
     }
     if (!std::isfinite(options.hz) || options.hz < 1.0 || options.hz > 10000.0)
     {
-        throw InputError("<command line>", "--hz",
+        throw InputError(kCommandLine, "--hz",
                          "expected a number in [1, 10000], found " + NumberText(options.hz));
     }
     // The run makes round(seconds * hz) steps: less than half a step would be none at all.
     if (std::llround(options.seconds * options.hz) < 1)
     {
-        throw InputError("<command line>", "--seconds",
+        throw InputError(kCommandLine, "--seconds",
                          NumberText(options.seconds) + " s at --hz " + NumberText(options.hz) +
                              " is less than half a step (" + NumberText(1.0 / options.hz) +
                              " s), so nothing would be simulated: give --seconds " +
@@ -93,21 +93,6 @@ std::string NumberText(double value)
     std::array<char, 64> text{};
     const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
     return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
-}
-
-void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension)
-{
-    if (file.empty())
-    {
-        return;
-    }
-    std::string found = std::filesystem::path(file).extension().string();
-    std::transform(found.begin(), found.end(), found.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (found != extension)
-    {
-        throw InputError("<command line>", flag, "expected a " + extension + " file, found \"" + file + "\"");
-    }
 }
 
 void PrintSceneWarnings(const Scene& scene)

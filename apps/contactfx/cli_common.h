@@ -3,6 +3,7 @@
 
 #include "contactfx/config.h"
 #include "contactfx/scene/rube.h"
+#include "harness/command_line.h" // kCommandLine, CheckExtension
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -57,10 +58,6 @@ void CheckRunOptions(const RunOptions& options);
 /// `value` as the shortest text that reads back as the same double ("0.9999999", "-5", "nan"): what a
 /// range error shows, so a rejected value never looks like one inside the range.
 std::string NumberText(double value);
-
-/// Throws InputError naming `flag` unless `file` (when not empty) ends in `extension` (".wav", any case):
-/// an output is named after what is written to it.
-void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension);
 
 /// The effects configuration the options select: --effects FILE, else --preset NAME, else the default
 /// preset.

@@ -91,30 +91,6 @@ void RestoreHandlers()
     }
 }
 
-// The folder part of OutputProblem: `file`'s folder, or the first file on the way to it, named as given.
-// "" when the folder exists or is merely missing (OutputFileProblem says that one).
-std::string FolderProblem(const fs::path& file)
-{
-    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    struct stat info = {};
-    if (::stat(folder.c_str(), &info) == 0)
-    {
-        return S_ISDIR(info.st_mode) ? std::string() : Quoted(folder) + " is not a folder";
-    }
-    if (errno != ENOTDIR)
-    {
-        return std::string();
-    }
-    for (fs::path up = folder.parent_path(); !up.empty() && up != up.root_path(); up = up.parent_path())
-    {
-        if (::stat(up.c_str(), &info) == 0 && !S_ISDIR(info.st_mode))
-        {
-            return Quoted(up) + " is not a folder";
-        }
-    }
-    return "folder " + Quoted(folder) + " does not exist";
-}
-
 } // namespace
 
 std::string OutputProblem(const fs::path& file)
@@ -123,8 +99,7 @@ std::string OutputProblem(const fs::path& file)
     {
         return "names no file";
     }
-    const std::string folderProblem = FolderProblem(file);
-    return folderProblem.empty() ? OutputFileProblem(RealPath(file), file) : folderProblem;
+    return OutputFileProblem(RealPath(file), file);
 }
 
 OutputFiles::OutputFiles() = default;

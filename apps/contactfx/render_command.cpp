@@ -82,7 +82,7 @@ constexpr int kMaxSide = 8192;
 
 [[noreturn]] void Refuse(const std::string& flag, const std::string& message)
 {
-    throw InputError("<command line>", flag, message);
+    throw InputError(kCommandLine, flag, message);
 }
 
 render::OutputKind CheckRenderOptions(const RenderOptions& options)

@@ -23,7 +23,7 @@ const SceneEntry& FindRegisteredScene(const std::string& name)
         names.emplace_back(entry.name);
     }
     const std::string suggestion = DidYouMean(name, names);
-    throw InputError("<command line>", "--scene",
+    throw InputError(kCommandLine, "--scene",
                      "unknown scene \"" + name + "\"" + (suggestion.empty() ? "" : "; " + suggestion) +
                          " (scenes: " + SceneNames() + ")");
 }
@@ -55,7 +55,7 @@ Scenario SelectScenario(const RunOptions& options)
     const bool named = !options.sceneName.empty();
     if (file == named)
     {
-        throw InputError("<command line>", "scene",
+        throw InputError(kCommandLine, "scene",
                          file ? "give either a scene file or --scene NAME, not both"
                               : "give a scene file or --scene NAME (" + SceneNames() + ")");
     }

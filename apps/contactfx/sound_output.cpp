@@ -34,7 +34,7 @@ void CheckAudioSeconds(double seconds, const std::string& flag)
     const double most = static_cast<double>(MaxWavSamples()) / SoundSynth::kSampleRate;
     if (seconds > most)
     {
-        throw InputError("<command line>", flag,
+        throw InputError(kCommandLine, flag,
                          "a WAV file holds at most " + NumberText(std::floor(most * 100.0) / 100.0) +
                              " s of 48 kHz 16-bit audio, asked for " + NumberText(seconds) +
                              " s (--seconds)");

@@ -25,8 +25,8 @@ struct Options
 };
 
 /// Throws InputError (file "<command line>", the flag as path) for an unknown scene, frames < 1 when
-/// given, a screenshot without frames or one whose folder is missing or not writable, a path that
-/// is a folder, or a name not ending in .png.
+/// given, a screenshot without frames or one OutputFileProblem (contactfx/files) refuses (a folder, a
+/// device, a read-only file, a missing or unwritable folder), or a name not ending in .png.
 void CheckOptions(const Options& options, bool framesGiven);
 
 } // namespace cfx::testbed

@@ -50,6 +50,22 @@ std::string Strerror(int error)
     return std::strerror(error != 0 ? error : EIO);
 }
 
+// For a path whose folders cannot all be folders (stat said ENOTDIR): the first file on the way to
+// `named`'s folder, e.g. "\"out/afile\" is not a folder" for out/afile/x.png.
+std::string NotAFolderOnTheWay(const std::filesystem::path& named)
+{
+    struct stat info = {};
+    for (std::filesystem::path up = named.parent_path(); !up.empty() && up != up.root_path();
+         up = up.parent_path())
+    {
+        if (::stat(up.c_str(), &info) == 0 && !S_ISDIR(info.st_mode))
+        {
+            return Quoted(up) + " is not a folder";
+        }
+    }
+    return "folder " + Quoted(named.parent_path()) + " does not exist";
+}
+
 } // namespace
 
 std::string OutputFileProblem(const std::filesystem::path& file, const std::filesystem::path& given)
@@ -90,6 +106,10 @@ std::string OutputFileProblem(const std::filesystem::path& file, const std::file
             return "cannot be written: " + Strerror(errno);
         }
     }
+    else if (errno == ENOTDIR)
+    {
+        return NotAFolderOnTheWay(given.empty() ? file : given);
+    }
     else if (errno != ENOENT)
     {
         return "cannot be written: " + Strerror(errno);
@@ -100,7 +120,7 @@ std::string OutputFileProblem(const std::filesystem::path& file, const std::file
     struct stat folderInfo = {};
     if (::stat(folder.c_str(), &folderInfo) != 0)
     {
-        return "folder " + Quoted(shown) + " does not exist";
+        return errno == ENOTDIR ? NotAFolderOnTheWay(named) : "folder " + Quoted(shown) + " does not exist";
     }
     if (!S_ISDIR(folderInfo.st_mode))
     {

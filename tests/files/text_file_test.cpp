@@ -110,6 +110,18 @@ TEST(TextFile, AMissingFolderIsNamedAsGiven)
     EXPECT_FALSE(fs::exists("no_such_folder_cfx"));
 }
 
+TEST(TextFile, AFileOnTheWayToTheFolderIsNamed)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_on_the_way");
+    WriteTextFileAtomically(dir / "afile", "x");
+    const std::string named = "\"" + (dir / "afile").string() + "\" is not a folder";
+    EXPECT_EQ(OutputFileProblem(dir / "afile" / "out.png"), named);
+    EXPECT_EQ(OutputFileProblem(dir / "afile" / "deeper" / "out.png"), named);
+    const std::string message = WriteError(dir / "afile" / "out.png", "bytes");
+    EXPECT_NE(message.find(named), std::string::npos) << message;
+    EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"afile"});
+}
+
 TEST(TextFile, ReadingAFolderOrAMissingFileNamesIt)
 {
     const fs::path dir = FreshDir("contactfx_test_text_file_read");

@@ -66,9 +66,11 @@ TEST(TestbedFlags, ScreenshotNeedsFramesAndAWritableFile)
     ASSERT_NE(handle, nullptr);
     std::fclose(handle);
     ExpectRefused(RunTestbed("--scene grinder --frames 1 --screenshot " + (file / "shot.png").string()),
-                  {"--screenshot", "does not exist"});
+                  {"--screenshot", "\"" + file.string() + "\" is not a folder"});
     ExpectRefused(RunTestbed("--scene grinder --frames 1 --screenshot " + dir.string()),
-                  {"--screenshot", "folder"});
+                  {"--screenshot", "directory"});
+    ExpectRefused(RunTestbed("--scene grinder --frames 1 --screenshot /dev/full"),
+                  {"--screenshot", "device"});
     EXPECT_FALSE(std::filesystem::exists(dir / "shot.png"));
     EXPECT_FALSE(std::filesystem::exists(missing));
 }

@@ -19,9 +19,10 @@ std::string ReadTextFile(const std::filesystem::path& path);
 /// Why `file` cannot be written as an output, or an empty string when it can. Refused: a path that
 /// names no file; an existing directory, device (`/dev/full`, `/dev/null`), FIFO or other non-regular
 /// file; an existing file with no write permission bit (a mode 444 file, even for root, who could write
-/// it) or that cannot be written; a folder that is missing, not a folder or not writable. Messages name
-/// the folder as in `given` (the path as the user wrote it) when that is not empty, e.g. "is a device, not
-/// a regular file: give a file to write".
+/// it) or that cannot be written; a folder that is missing, not writable or not a folder (the first file on
+/// the way to it is named: `"out/afile" is not a folder`). Messages name the folder as in `given` (the path
+/// as the user wrote it) when that is not empty, e.g. "is a device, not a regular file: give a file to
+/// write".
 std::string OutputFileProblem(const std::filesystem::path& file, const std::filesystem::path& given = {});
 
 /// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see the old

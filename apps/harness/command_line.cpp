@@ -1,0 +1,36 @@
+#include "harness/command_line.h"
+
+#include "contactfx/error.h"
+#include "contactfx/files/text_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace cfx
+{
+
+void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension)
+{
+    if (file.empty())
+    {
+        return;
+    }
+    std::string found = std::filesystem::path(file).extension().string();
+    std::transform(found.begin(), found.end(), found.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (found != extension)
+    {
+        throw InputError(kCommandLine, flag, "expected a " + extension + " file, found \"" + file + "\"");
+    }
+}
+
+void CheckOutputFile(const std::string& flag, const std::string& file)
+{
+    if (const std::string problem = OutputFileProblem(file); !problem.empty())
+    {
+        throw InputError(kCommandLine, flag, file + ": " + problem);
+    }
+}
+
+} // namespace cfx

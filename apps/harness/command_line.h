@@ -1,0 +1,20 @@
+// contactfx harness: checks of command-line outputs shared by the CLI and the testbed.
+#pragma once
+
+#include <string>
+
+namespace cfx
+{
+
+/// What InputError names as the file of a command-line problem.
+inline constexpr const char* kCommandLine = "<command line>";
+
+/// Throws InputError (kCommandLine, `flag`) unless `file` (when not empty) ends in `extension` (".wav",
+/// compared in any case): an output is named after what is written to it.
+void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension);
+
+/// Throws InputError (kCommandLine, `flag`) naming `file` when OutputFileProblem (contactfx/files) refuses
+/// it as an output: a folder, a device, a read-only file, a missing or unwritable folder.
+void CheckOutputFile(const std::string& flag, const std::string& file);
+
+} // namespace cfx
