@@ -22,7 +22,7 @@ bool FieldRange::Contains(float value) const
 
 std::string ExpectedInteger(const FieldRange& range)
 {
-    return "a number in [" + std::to_string(static_cast<long long>(range.min)) + ", " +
+    return "an integer in [" + std::to_string(static_cast<long long>(range.min)) + ", " +
            std::to_string(static_cast<long long>(range.max)) + "]";
 }
 

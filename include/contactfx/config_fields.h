@@ -82,7 +82,7 @@ template <typename S> struct Field
     float step = 0.0f; ///< the testbed's drag speed for numbers, per pixel
 };
 
-/// What every message about an integer field states it expects: "a number in [1, 4000000]" (the range the
+/// What every message about an integer field states it expects: "an integer in [1, 4000000]" (the range the
 /// docs show as "integer [1, 4000000]"), whatever the wrong value was (out of range, negative, too large for
 /// the member, not a whole number, not a number), from the reader and from Validate alike.
 std::string ExpectedInteger(const FieldRange& range);

@@ -38,26 +38,27 @@ template <typename S> bool IsNested(const Field<S>& field)
 void ReadChoice(const ObjectReader& reader, std::string_view key, std::span<const std::string_view> names,
                 int& out)
 {
-    if (!reader.Has(key))
+    const Json* value = reader.Find(key);
+    if (value == nullptr)
     {
         return;
     }
-    std::string text = reader.String(key);
-    for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t i = 0; value->is_string() && i < names.size(); ++i)
     {
-        if (text == names[i])
+        if (value->get_ref<const std::string&>() == names[i])
         {
             out = static_cast<int>(i);
             return;
         }
     }
+    // One message for any other value, a string or not: what the field takes.
     std::string expected;
     for (std::string_view name : names)
     {
         expected += (expected.empty() ? "\"" : ", \"") + std::string(name) + "\"";
     }
-    reader.Diagnostics().Add(reader.FieldPath(key), "expected one of " + expected + ", found " +
-                                                        scene_detail::Describe(*reader.Find(key)));
+    reader.Diagnostics().Add(reader.FieldPath(key),
+                             "expected one of " + expected + ", found " + scene_detail::Describe(*value));
 }
 
 std::optional<Color> ReadColor(const Json& value, const std::string& path, DiagnosticList& diagnostics)

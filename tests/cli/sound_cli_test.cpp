@@ -258,7 +258,7 @@ TEST(CliSound, BadSoundValuesAreNamedByTheirJsonPathAndWriteNothing)
                " --audio " + (dir / "a.wav").string());
     EXPECT_EQ(result.exitCode, 1);
     EXPECT_NE(
-        result.output.find("bad.effects.json: sound.maxVoices: expected a number in [1, 4096], found 0"),
+        result.output.find("bad.effects.json: sound.maxVoices: expected an integer in [1, 4096], found 0"),
         std::string::npos)
         << result.output;
     EXPECT_NE(

@@ -131,7 +131,7 @@ std::vector<BadFile> BadFiles()
              R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks", "threshold": "7FC00000"})"),
          "rules[0].threshold", "finite"},
         {"negative.effects.json", Effects("", R"(, "budget": {"capacity": 0})"), "budget.capacity",
-         "expected a number in [1, 4000000], found 0"},
+         "expected an integer in [1, 4000000], found 0"},
         {"assignment.effects.json", Effects("", R"(, "assignments": [{"material": "glass"}])"),
          "assignments[0].material", "unknown material \"glass\""},
     };

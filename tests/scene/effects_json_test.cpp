@@ -242,15 +242,16 @@ TEST(EffectsJson, IntegerFieldsStateTheirDocumentedRangeForEveryWrongValue)
     { return R"({"materials": ["a"], "budget": {"capacity": )" + capacity + "}}"; };
     for (const std::string value : {"-5", "0", "5000000", "2000000000", "18446744073709551615", "1.5"})
     {
-        EXPECT_EQ(
-            ProblemsOf(withCapacity(value)),
-            (std::vector<std::string>{"budget.capacity: expected a number in [1, 4000000], found " + value}));
+        EXPECT_EQ(ProblemsOf(withCapacity(value)),
+                  (std::vector<std::string>{"budget.capacity: expected an integer in [1, 4000000], found " +
+                                            value}));
     }
-    EXPECT_EQ(ProblemsOf(withCapacity("1e20")),
-              (std::vector<std::string>{"budget.capacity: expected a number in [1, 4000000], found 1e+20"}));
+    EXPECT_EQ(
+        ProblemsOf(withCapacity("1e20")),
+        (std::vector<std::string>{"budget.capacity: expected an integer in [1, 4000000], found 1e+20"}));
     EXPECT_EQ(ProblemsOf(withCapacity("\"many\"")),
               (std::vector<std::string>{
-                  "budget.capacity: expected a number in [1, 4000000], found string \"many\""}));
+                  "budget.capacity: expected an integer in [1, 4000000], found string \"many\""}));
     // The bounds and a whole number written as a float are fine; Validate says the same for API values.
     EXPECT_EQ(LoadEffectsString(withCapacity("4000000"), "x").budget.capacity, 4000000u);
     EXPECT_EQ(LoadEffectsString(withCapacity("1"), "x").budget.capacity, 1u);
@@ -258,7 +259,7 @@ TEST(EffectsJson, IntegerFieldsStateTheirDocumentedRangeForEveryWrongValue)
     EffectsConfig config;
     config.budget.capacity = 0;
     ASSERT_EQ(Validate(config).size(), 1u);
-    EXPECT_EQ(Validate(config)[0].message, "expected a number in [1, 4000000], found 0");
+    EXPECT_EQ(Validate(config)[0].message, "expected an integer in [1, 4000000], found 0");
 
     // Every integer field of every table: just outside its range, either side.
     const nlohmann::json preset = nlohmann::json::parse(SaveEffectsString(DefaultPreset()));
@@ -293,6 +294,27 @@ TEST(EffectsJson, IntegerFieldsStateTheirDocumentedRangeForEveryWrongValue)
     outside(SoundFields(), [](nlohmann::json& root) -> nlohmann::json& { return root["sound"]; });
     EXPECT_EQ(checked,
               2 * 7); // categoryBits, maskBits; capacity, contacts, particleHits; maxVoices, trackedPairs
+}
+
+// A named value of the wrong JSON type was reported twice ("expected a string" and "expected one of"):
+// once, with the names it takes, whatever the value.
+TEST(EffectsJson, ANamedValueOfAnyWrongKindIsOneProblem)
+{
+    const std::string names = "expected one of \"rate\", \"perStep\", found ";
+    for (const auto& [value, found] :
+         std::vector<std::pair<std::string, std::string>>{{"null", "null"},
+                                                          {"5", "number 5"},
+                                                          {"[\"rate\"]", "an array"},
+                                                          {"\"Rate\"", "string \"Rate\""}})
+    {
+        const std::string config = R"({"materials": ["a"], "particleTypes": [{"name": "p"}],
+            "rules": [{"materialA": "a", "materialB": "a", "particleType": "p", "emission": )" +
+                                   value + "}]}";
+        EXPECT_EQ(ProblemsOf(config), std::vector<std::string>{"rules[0].emission: " + names + found});
+    }
+    EXPECT_EQ(
+        ProblemsOf(R"({"materials": ["a"], "budget": {"recycle": null}})"),
+        (std::vector<std::string>{"budget.recycle: expected one of \"oldest\", \"lowestLife\", found null"}));
 }
 
 // A sound rule tunes the voices of the pair rule with its two materials (docs/sound.md): one for a pair that

@@ -57,7 +57,7 @@ TEST(SoundConfig, BadValuesAreErrorsWithTheirJsonPath)
     });
     const std::vector<std::string> expected = {
         "sound.gian: unknown field, did you mean `gain`?",
-        "sound.maxVoices: expected a number in [1, 4096], found 0",
+        "sound.maxVoices: expected an integer in [1, 4096], found 0",
         "sound.rules[0].timbre: expected one of \"auto\", \"hiss\", \"squeal\", \"rumble\", found "
         "string \"whistle\"",
         "sound.rules[1].release: expected a number, found string \"long\"",
