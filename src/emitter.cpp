@@ -30,6 +30,20 @@ bool SurfaceIsA(const b2Fixture* fixtureA, const b2Fixture* fixtureB)
     return bodyA->GetMass() >= bodyB->GetMass();
 }
 
+// How far along the surface a start is looked for, each way (m): a metre, or half the larger side of the
+// other fixture's box when that is more. The gap between a convex body and the surface it presses on opens
+// slowly (a 7.7 m wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact): a large body
+// finds the free surface at its rim, where its dirt is thrown, instead of rejecting every particle.
+float SearchDistance(const b2Fixture& other, int otherChild)
+{
+    constexpr float kLeast = 1.0f;
+    b2AABB box;
+    other.GetShape()->ComputeAABB(&box, other.GetBody()->GetTransform(), otherChild);
+    const b2Vec2 extent = box.upperBound - box.lowerBound;
+    const float half = 0.5f * std::max(extent.x, extent.y);
+    return std::isfinite(half) ? std::max(kLeast, half) : kLeast;
+}
+
 // A particle count from a float that may be absurd (a huge rate), infinite or NaN: clamped to [0, limit]
 // (NaN to 0) before it is converted, since converting a float outside int's range is undefined.
 int ClampedCount(float value, int limit)
@@ -444,6 +458,11 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.normal = surfaceNormal;
     query.slip = slip;
     query.radius = type.radius;
+    if (rule.placement == SpawnPlacement::surface) // the tutorial's drop looks 1 m each way, as documented
+    {
+        query.searchDistance = surfaceIsA ? SearchDistance(*fixtureB, contact->GetChildIndexB())
+                                          : SearchDistance(*fixtureA, contact->GetChildIndexA());
+    }
     const SpawnPoint start = rule.placement == SpawnPlacement::tutorialDrop
                                  ? FindTutorialDropPoint(context.world, query, &context.particleBodies)
                                  : FindSpawnPoint(context.world, query, &context.particleBodies);

@@ -198,4 +198,42 @@ TEST(SpawnPile, NoFreeStartInACreviceMeansNoSpark)
     }
 }
 
+// A large steel wheel landing hard on dirt: its gap to the ground is narrower than a dirt particle for more
+// than a metre either side of the contact (a 7.7 m wheel lifts by 0.1 m only 1.2 m out), so a search of
+// one metre found no start and its whole impact burst was rejected. The search reaches as far as the
+// wheel does: the dirt starts at its rim, outside everything.
+TEST(SpawnPile, ALargeWheelLandingThrowsItsDirtFromItsRim)
+{
+    for (float radius : {3.0f, 7.7f, 20.0f})
+    {
+        SCOPED_TRACE("radius " + std::to_string(radius));
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround(0.6f, 100.0f);
+        b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, radius + 0.3f), radius, 0.6f);
+        wheel->SetLinearVelocity(b2Vec2(0.0f, -27.0f));
+        scene.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
+        Effects& fx = scene.Attach();
+        fx.SetMaterial(ground, fx.FindMaterial("dirt"));
+        fx.SetMaterial(wheel, fx.FindMaterial("steel"));
+        const float dirtRadius = fx.Config().particleTypes[fx.Config().FindParticleType("dirt").index].radius;
+        std::uint64_t checked = 0;
+        for (int i = 0; i < 30; ++i)
+        {
+            const std::uint32_t before = fx.Particles().count;
+            scene.Step();
+            const ParticleView view = fx.Particles();
+            for (std::uint32_t k = std::min(before, view.count); k < view.count; ++k)
+            {
+                const b2Vec2 centre(view.positionX[view.Slot(k)], view.positionY[view.Slot(k)]);
+                EXPECT_FALSE(StartsInside(*scene.world, centre, dirtRadius)) << centre.x << ", " << centre.y;
+                ++checked;
+            }
+        }
+        EXPECT_GT(scene.Spawned("dirt"), 20u);
+        EXPECT_EQ(fx.Stats().spawnRejected, 0u);
+        EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+        EXPECT_GT(checked, 0u);
+    }
+}
+
 } // namespace cfx::test
