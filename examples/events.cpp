@@ -64,6 +64,8 @@ const char* EndReason(cfx::ScrapeEnd end)
         return "destroyed";
     case cfx::ScrapeEnd::stopped:
         return "stopped";
+    case cfx::ScrapeEnd::materialChanged:
+        return "material changed";
     case cfx::ScrapeEnd::none:
         break;
     }

@@ -148,7 +148,7 @@ std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
     return slot;
 }
 
-void ContactTracker::Untrack(b2Contact* contact, bool destroyed)
+void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
 {
     std::uint64_t* value = m_index.Find(contact);
     if (value == nullptr)
@@ -167,7 +167,7 @@ void ContactTracker::Untrack(b2Contact* contact, bool destroyed)
         {
             EndedPair ended;
             ended.slot = list[slot].pair;
-            ended.destroyed = destroyed;
+            ended.reason = reason;
             ended.fixtureA = RuleFixtureA(list[slot]);
             ended.fixtureB = RuleFixtureB(list[slot]);
             ended.materialA = m_materials.Recorded(ended.fixtureA);
@@ -194,7 +194,7 @@ void ContactTracker::Prune()
             b2Contact* contact = list[i].contact;
             if (!IsSolid(contact) || !contact->IsTouching())
             {
-                Untrack(contact, false);
+                Untrack(contact, ScrapeEnd::contactEnded);
             }
         }
     }
@@ -215,7 +215,7 @@ void ContactTracker::EndStep()
     ++m_step;
 }
 
-void ContactTracker::ForgetFixture(const b2Fixture* fixture)
+void ContactTracker::EndContactsOf(const b2Fixture* fixture, ScrapeEnd reason)
 {
     for (std::vector<TrackedContact>& list : m_byRule)
     {
@@ -224,7 +224,7 @@ void ContactTracker::ForgetFixture(const b2Fixture* fixture)
             b2Contact* contact = list[i].contact;
             if (contact->GetFixtureA() == fixture || contact->GetFixtureB() == fixture)
             {
-                Untrack(contact, true);
+                Untrack(contact, reason);
             }
         }
     }
@@ -236,7 +236,7 @@ void ContactTracker::MarkDestroyed(const b2Fixture* fixture)
     {
         if (ended.fixtureA == fixture || ended.fixtureB == fixture)
         {
-            ended.destroyed = true;
+            ended.reason = ScrapeEnd::destroyed;
         }
     }
 }
@@ -290,7 +290,7 @@ void ContactTracker::BeginContact(b2Contact* contact)
 
 void ContactTracker::EndContact(b2Contact* contact)
 {
-    Untrack(contact, false);
+    Untrack(contact, ScrapeEnd::contactEnded);
     if (m_forward != nullptr)
     {
         m_forward->EndContact(contact);

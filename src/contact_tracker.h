@@ -30,6 +30,7 @@
 #pragma once
 
 #include "contactfx/config.h"
+#include "contactfx/events.h"
 #include "contactfx/rules.h"
 #include "fixture_materials.h"
 #include "pointer_map.h"
@@ -80,9 +81,10 @@ struct TrackedPair
 struct EndedPair
 {
     std::uint32_t slot = 0; ///< its pair slot, free now (perhaps already reused by a newer pair)
-    /// The fixture or body of its last contact was destroyed (ForgetFixture, or Box2D's destruction
-    /// listener through MarkDestroyed); else the fixtures stopped touching or one became a sensor.
-    bool destroyed = false;
+    /// Why: contactEnded (the fixtures stopped touching or one became a sensor), destroyed (the fixture
+    /// or body of its last contact: ForgetFixture, or Box2D's destruction listener through MarkDestroyed)
+    /// or materialChanged (EndContactsOf).
+    ScrapeEnd reason = ScrapeEnd::contactEnded;
     /// The last contact's fixtures in the rule's order (materialA's first) and their materials as
     /// recorded when it left. The fixtures may have been destroyed since: compare, never dereference.
     const b2Fixture* fixtureA = nullptr;
@@ -120,7 +122,11 @@ public:
 
     /// Drops every contact that involves `fixture` (before it is destroyed by the application); pairs
     /// that end with them are marked destroyed.
-    void ForgetFixture(const b2Fixture* fixture);
+    void ForgetFixture(const b2Fixture* fixture) { EndContactsOf(fixture, ScrapeEnd::destroyed); }
+    /// Drops every contact that involves `fixture`; pairs that end with them end for `reason`. Contacts
+    /// still touching are tracked again by the next PreSolve, under the rule their materials then select
+    /// (Effects::SetMaterial, reason materialChanged).
+    void EndContactsOf(const b2Fixture* fixture, ScrapeEnd reason);
     /// After Box2D destroyed `fixture` (b2DestructionListener): pairs that ended with its contacts are
     /// marked destroyed.
     void MarkDestroyed(const b2Fixture* fixture);
@@ -148,7 +154,7 @@ public:
 
 private:
     void Track(b2Contact* contact, bool firstTouch);
-    void Untrack(b2Contact* contact, bool destroyed);
+    void Untrack(b2Contact* contact, ScrapeEnd reason);
     void RecordApproach(b2Contact* contact, TrackedContact& tracked);
     std::uint32_t FindOrAddPair(b2Contact* contact, RuleId rule);
 

@@ -114,6 +114,14 @@ public:
     b2DestructionListener* forward;
 };
 
+// Box2D's do-nothing contact listener, the one every world starts with (b2ContactManager's constructor
+// sets it; libbox2d does not export it): a world whose listener is this one has none of the application's.
+const b2ContactListener* BoxDefaultContactListener()
+{
+    static const b2ContactManager probe;
+    return probe.m_contactListener;
+}
+
 } // namespace
 
 // What Effects keeps out of its public header. Members are declared in the order they depend on each
@@ -129,11 +137,17 @@ struct Effects::Internals
           emitter(config, def.seed, def.particles.checkParticles),
           events(materials, config.budget.contacts, config.budget.particleHits)
     {
-        tracker.SetForward(def.contactListener);
+        // A listener the application set on the world before is kept and forwarded to, as one given here.
+        worldListener = world.GetContactManager().m_contactListener;
+        const bool worldHasOwn = worldListener != nullptr && worldListener != BoxDefaultContactListener();
+        tracker.SetForward(def.contactListener != nullptr ? def.contactListener
+                           : worldHasOwn                  ? worldListener
+                                                          : nullptr);
         tracker.Reserve(config.budget.contacts);
     }
 
     WorldClaim claim;
+    b2ContactListener* worldListener; // the world's contact listener before Effects: put back if none is set
     FixtureMaterials materials;
     ContactTracker tracker;
     Destruction destruction;
@@ -155,13 +169,18 @@ Effects::Effects(b2World& world, const EffectsDef& def)
 
 Effects::~Effects()
 {
-    m_world.SetContactListener(m_internals->tracker.Forward());
+    b2ContactListener* forward = m_internals->tracker.Forward();
+    m_world.SetContactListener(forward != nullptr ? forward : m_internals->worldListener);
     m_world.SetDestructionListener(m_internals->destruction.forward);
 }
 
 void Effects::SetMaterial(b2Fixture* fixture, MaterialId material)
 {
-    m_internals->materials.Set(fixture, material);
+    if (m_internals->materials.Get(fixture) != material)
+    {
+        m_internals->tracker.EndContactsOf(fixture, ScrapeEnd::materialChanged); // read the old materials
+        m_internals->materials.Set(fixture, material);
+    }
 }
 
 MaterialId Effects::Material(const b2Fixture* fixture) const
@@ -178,7 +197,7 @@ void Effects::SetMaterial(b2Body* body, MaterialId material)
 {
     for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
     {
-        m_internals->materials.Set(fixture, material);
+        SetMaterial(fixture, material);
     }
 }
 

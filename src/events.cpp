@@ -67,8 +67,7 @@ void EventTracker::BeginStep(std::uint64_t step, float dt, std::span<const Ended
         if (scrape.id != 0)
         {
             // Named by the pair's last contact, with the materials its fixtures had as it left.
-            EffectEvent& event = End(scrape, pair.destroyed ? ScrapeEnd::destroyed : ScrapeEnd::contactEnded,
-                                     pair.fixtureA, pair.fixtureB);
+            EffectEvent& event = End(scrape, pair.reason, pair.fixtureA, pair.fixtureB);
             event.materialA = pair.materialA;
             event.materialB = pair.materialB;
         }

@@ -110,8 +110,9 @@ std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config,
     static constexpr const char* kTypes[] = {"scrape_began", "scrape_changed", "scrape_ended", "impact",
                                              "particle_hits"};
     // ScrapeEnd::stopped: the run stopped (Simulation::EndScrapes).
-    static constexpr const char* kReasons[] = {"none",      "contact_ended", "asleep", "below_threshold",
-                                               "destroyed", "run_ended"};
+    static constexpr const char* kReasons[] = {
+        "none", "contact_ended", "asleep", "below_threshold", "destroyed", "run_ended", "material_changed"};
+    static_assert(std::size(kReasons) == static_cast<std::size_t>(ScrapeEnd::materialChanged) + 1);
     Json line;
     line["type"] = kTypes[static_cast<int>(event.type)];
     line["step"] = event.step;

@@ -106,7 +106,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
 /// scrape_changed, scrape_ended, impact), "step", "time" (s simulated when reported), "id", "pair"
 /// ("A+B", names sorted), "point": [x, y], "normal": [x, y], then "intensity", "tangential_speed",
 /// "normal_impulse" for scrapes, "reason" for ended scrapes ("contact_ended", "asleep",
-/// "below_threshold", "destroyed", or "run_ended" for those of Simulation::EndScrapes),
+/// "below_threshold", "destroyed", "material_changed", or "run_ended" for those of Simulation::EndScrapes),
 /// "approach_speed", "normal_impulse" for impacts}; particle hits: {"type": "particle_hits", "step", "time",
 /// "particle_type" (its name), "count", "point": [x, y] (their mean touch point), "mean_speed" (m/s)}.
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz);

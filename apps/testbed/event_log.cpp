@@ -8,7 +8,9 @@ namespace cfx::testbed
 std::string DescribeEvent(const EffectEvent& event, const EffectsConfig& config, float time)
 {
     static constexpr const char* kTypes[] = {"began", "scrape", "ended", "impact", "hits"};
-    static constexpr const char* kEnds[] = {"", "contact ended", "asleep", "below threshold", "destroyed"};
+    static constexpr const char* kEnds[] = {
+        "", "contact ended", "asleep", "below threshold", "destroyed", "stopped", "material changed"};
+    static_assert(std::size(kEnds) == static_cast<std::size_t>(ScrapeEnd::materialChanged) + 1);
     char line[160];
     if (event.type == EffectEventType::particleHits)
     {

@@ -17,7 +17,10 @@
 // touching when Effects is created are picked up at the next world step (PreSolve). Effects installs
 // itself as the world's contact and destruction listener; give it the application's own listeners
 // (EffectsDef or the setters, never b2World's setters while it lives) and it forwards every callback to
-// them. The destructor puts the application's listeners back. Through the destruction listener it
+// them. A contact listener already set on the world (b2World::SetContactListener before Effects) is kept
+// and forwarded to when EffectsDef names none. A destruction listener set on the world before cannot be
+// (Box2D 2.4 has no way to read it): it is replaced, so give it through EffectsDef::destructionListener.
+// The destructor puts the application's listeners back. Through the destruction listener it
 // forgets fixtures destroyed with their body and notices when the application destroys the Box2D body of
 // a body-backed particle (ParticleBackend::body, the tutorial preset): that particle goes, and its body is
 // never destroyed twice.
@@ -71,7 +74,10 @@ public:
     Effects& operator=(const Effects&) = delete;
 
     MaterialId FindMaterial(std::string_view name) const { return m_config.FindMaterial(name); }
-    /// Gives `fixture` a material (an invalid id removes it). Takes effect for contacts that begin later.
+    /// Gives `fixture` a material (an invalid id removes it). Takes effect at the next world step, for
+    /// contacts already touching too: their scrapes end (ScrapeEnd::materialChanged), and those that go on
+    /// touching are tracked again under the rule the new materials select. The same material again
+    /// changes nothing.
     void SetMaterial(b2Fixture* fixture, MaterialId material);
     /// Gives every fixture of `body` the material.
     void SetMaterial(b2Body* body, MaterialId material);

@@ -47,6 +47,9 @@ enum class ScrapeEnd : std::uint8_t
     belowThreshold, ///< intensity at or below the threshold for scrapeEndDelay
     destroyed,      ///< a fixture or body was destroyed
     stopped,        ///< the application ended it: Effects::EndScrapes (it stops stepping)
+    /// A fixture of it was given another material (Effects::SetMaterial); if the contact goes on, a new
+    /// scrape begins under the rule the new materials select.
+    materialChanged,
 };
 
 /// One event. Fields that do not apply to a type are zero (invalid ids for a particle hit's rule and

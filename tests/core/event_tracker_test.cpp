@@ -226,7 +226,7 @@ TEST(EventTracker, EndedPairsEndTheirScrapesFirstInTheirOrder)
     // pairs' own fixtures and materials are reported (those of the last contact, recorded as it left).
     EndedPair destroyed;
     destroyed.slot = 1;
-    destroyed.destroyed = true;
+    destroyed.reason = ScrapeEnd::destroyed;
     destroyed.fixtureA = scene.otherSteel;
     destroyed.fixtureB = scene.concrete;
     destroyed.materialA = MaterialId{7};

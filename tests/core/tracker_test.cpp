@@ -95,7 +95,7 @@ TEST(ContactTracker, EndedPairsListsOnlyPairsAStepHasSeen)
     ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
     const EndedPair& ended = scene.tracker.EndedPairs()[0];
     EXPECT_EQ(ended.slot, slot);
-    EXPECT_FALSE(ended.destroyed);
+    EXPECT_EQ(ended.reason, ScrapeEnd::contactEnded);
     EXPECT_EQ(ended.fixtureA, scene.Steel()) << "the rule's order: steel is its materialA";
     EXPECT_EQ(ended.fixtureB, scene.Concrete());
     EXPECT_EQ(ended.materialA, scene.config.FindMaterial("steel"));
@@ -111,7 +111,7 @@ TEST(ContactTracker, ForgottenFixtureEndsItsPairAsDestroyed)
     scene.tracker.EndStep();
     scene.tracker.ForgetFixture(scene.Steel());
     ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
-    EXPECT_TRUE(scene.tracker.EndedPairs()[0].destroyed);
+    EXPECT_EQ(scene.tracker.EndedPairs()[0].reason, ScrapeEnd::destroyed);
 }
 
 TEST(ContactTracker, DestroyedBodyMarksItsEndedPair)
@@ -122,9 +122,9 @@ TEST(ContactTracker, DestroyedBodyMarksItsEndedPair)
     const b2Fixture* steel = scene.Steel();
     scene.world->DestroyBody(scene.box); // EndContact: ended as if parted
     ASSERT_EQ(scene.tracker.EndedPairs().size(), 1u);
-    EXPECT_FALSE(scene.tracker.EndedPairs()[0].destroyed);
+    EXPECT_EQ(scene.tracker.EndedPairs()[0].reason, ScrapeEnd::contactEnded);
     scene.tracker.MarkDestroyed(steel); // what Effects' destruction listener does next
-    EXPECT_TRUE(scene.tracker.EndedPairs()[0].destroyed);
+    EXPECT_EQ(scene.tracker.EndedPairs()[0].reason, ScrapeEnd::destroyed);
 }
 
 TEST(ContactTracker, NewTouchLastsUntilEndStep)
@@ -303,6 +303,35 @@ TEST(ContactTracker, EffectsRestoresTheApplicationListeners)
     scene.CreateBox(b2Vec2(0.0f, 0.49f), 0.5f, 0.5f, 0.5f);
     scene.Step();
     EXPECT_FALSE(recorder.calls.empty());
+}
+
+// A listener the application set on the world before Effects was created was dropped: it is forwarded to,
+// and put back when Effects goes. A world without one gets Box2D's own back.
+TEST(ContactTracker, AListenerSetOnTheWorldBeforeEffectsIsKeptAndPutBack)
+{
+    const b2ContactListener* boxDefault = b2World(b2Vec2(0.0f, 0.0f)).GetContactManager().m_contactListener;
+    RecordingListener recorder;
+    {
+        BoxOnGround scene;
+        scene.world->SetContactListener(&recorder);
+        scene.Attach();
+        scene.Assign();
+        for (int i = 0; i < 10; ++i)
+        {
+            scene.Step();
+        }
+        EXPECT_EQ(scene.Tracked(), 1u);
+        ASSERT_FALSE(recorder.calls.empty());
+        EXPECT_EQ(recorder.calls.front(), "begin");
+        scene.effects.reset();
+        EXPECT_EQ(scene.world->GetContactManager().m_contactListener, &recorder);
+        scene.world->SetContactListener(nullptr);
+    }
+    BoxOnGround plain;
+    plain.Attach();
+    plain.Step();
+    plain.effects.reset();
+    EXPECT_EQ(plain.world->GetContactManager().m_contactListener, boxDefault);
 }
 
 } // namespace cfx::test
