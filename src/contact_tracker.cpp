@@ -185,6 +185,24 @@ void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
     list.pop_back();
 }
 
+bool ContactTracker::AnyAwake() const
+{
+    const auto moving = [](const b2Body* body)
+    { return body->IsAwake() && body->GetType() != b2_staticBody; };
+    for (const std::vector<TrackedContact>& list : m_byRule)
+    {
+        for (const TrackedContact& tracked : list)
+        {
+            if (moving(tracked.contact->GetFixtureA()->GetBody()) ||
+                moving(tracked.contact->GetFixtureB()->GetBody()))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 void ContactTracker::Prune()
 {
     for (std::vector<TrackedContact>& list : m_byRule)
@@ -212,6 +230,7 @@ void ContactTracker::EndStep()
         }
     }
     m_endedPairs.clear();
+    m_solved = false;
     ++m_step;
 }
 
@@ -301,6 +320,7 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
 {
     // Box2D calls PreSolve only for touching, non-sensor contacts: a fixture that stopped being a
     // sensor while touching comes back into tracking here, since no new BeginContact will come.
+    m_solved = true;
     Track(contact, false);
     if (m_forward != nullptr)
     {

@@ -120,6 +120,11 @@ public:
     /// tracked before it count as seen by a step.
     void EndStep();
 
+    /// Whether Box2D called PreSolve since the last EndStep: a world step solved a touching contact
+    /// of awake bodies. False after no world step, and after one where no awake body touched anything.
+    bool Solved() const { return m_solved; }
+    /// Whether a tracked contact has an awake body that is not static: one Box2D's next step solves.
+    bool AnyAwake() const;
     /// Drops every contact that involves `fixture` (before it is destroyed by the application); pairs
     /// that end with them are marked destroyed.
     void ForgetFixture(const b2Fixture* fixture) { EndContactsOf(fixture, ScrapeEnd::destroyed); }
@@ -168,6 +173,7 @@ private:
     std::vector<EndedPair> m_endedPairs;
     std::uint32_t m_nextId = 1;
     std::uint64_t m_step = 0;
+    bool m_solved = false; // PreSolve was called since the last EndStep
 };
 
 } // namespace cfx

@@ -137,6 +137,12 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
     {
         m_emissionCarry[ended.slot] = 0.0f;
     }
+    // Box2D calls PreSolve for every touching contact with an awake body in every world step: none since
+    // the last step while a tracked contact has an awake body means the world did not step (a paused
+    // game). Emitting from the contacts as the last world step left them would spray from a frozen
+    // scrape: emission and scrapes wait for the world. (A body put to sleep between steps has no PreSolve
+    // either, and its scrape ends as asleep.)
+    const bool paused = !tracker.Solved() && tracker.AnyAwake();
     // More particles than the pool holds in one step would only recycle each other.
     m_spawnBudget = static_cast<int>(std::min<std::uint32_t>(particles.Capacity(), 0x7FFFFFFFu));
     for (int ruleIndex = 0; ruleIndex < tracker.RuleCount(); ++ruleIndex)
@@ -162,6 +168,10 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
         ruleStats.intensityMaxLastStep = 0.0f;
+        if (paused)
+        {
+            continue;
+        }
 
         // Gather the samples of every pair (in the order of each pair's first contact), then emit pair by
         // pair.

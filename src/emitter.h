@@ -60,7 +60,8 @@ public:
     Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStarts = false);
 
     /// For every body pair of every rule: emits into `particles`, reports to `events` (after its
-    /// BeginStep for this step), updates `stats`.
+    /// BeginStep for this step), updates `stats`. Without a world step since the last Emit (no
+    /// PreSolve while a tracked contact has an awake body) only the step's statistics are reset.
     void Emit(b2World& world, const EffectsConfig& config, const ContactTracker& tracker,
               EventTracker& events, ParticleSystem& particles, EffectsStats& stats, float dt);
     /// The fraction of a particle the pair in `slot` owes (rate emission), in [0, 1).

@@ -95,6 +95,8 @@ public:
     void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
 
     /// Runs after each b2World::Step with the same dt (s, > 0): emission, spawning, particle motion.
+    /// Called again without a world step in between (a paused world), it moves the particles but emits
+    /// nothing and leaves the scrapes as they are: the contacts are as the last world step left them.
     /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the
     /// world's gravity is not finite; nothing changes then.
     void Step(float dt);

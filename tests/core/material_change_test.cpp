@@ -121,4 +121,30 @@ TEST(MaterialChange, TheSameMaterialAgainChangesNothing)
     EXPECT_TRUE(scene.Scrapes(after, EffectEventType::scrapeBegan).empty());
 }
 
+// A game that pauses its world but keeps stepping the effects (to let the particles settle) sprayed sparks
+// from the frozen scrape, from the contacts the last world step left.
+TEST(PausedWorld, StepsWithoutAWorldStepMoveTheParticlesButEmitNothing)
+{
+    Grinder scene;
+    scene.Run(30);
+    const std::uint64_t sparks = scene.Spawned("sparks");
+    ASSERT_GT(sparks, 50u);
+    const ParticleView before = scene.effects->Particles();
+    const b2Vec2 first(before.positionX[before.Slot(0)], before.positionY[before.Slot(0)]);
+    for (int i = 0; i < 20; ++i)
+    {
+        scene.effects->Step(1.0f / 60.0f);
+        for (const EffectEvent& event : scene.effects->Events())
+        {
+            EXPECT_EQ(event.type, EffectEventType::particleHits) << "no scrape changes while paused";
+        }
+    }
+    EXPECT_EQ(scene.Spawned("sparks"), sparks);
+    const ParticleView after = scene.effects->Particles();
+    ASSERT_GT(after.count, 0u);
+    EXPECT_NE(b2Vec2(after.positionX[after.Slot(0)], after.positionY[after.Slot(0)]), first);
+    scene.Run(10); // the world steps again: so does the grinding
+    EXPECT_GT(scene.Spawned("sparks"), sparks);
+}
+
 } // namespace cfx::test
