@@ -7,13 +7,46 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 
 namespace cfx::cli
 {
+
+const CLI::Validator& NamesAFile()
+{
+    // No description: the help shows the option's type as before.
+    static const CLI::Validator check(
+        [](const std::string& value) { return value.empty() ? std::string("names no file") : std::string(); },
+        "");
+    return check;
+}
+
+bool FlushStandardOutput()
+{
+    static bool reported = false;
+    errno = 0;
+    std::cout.flush(); // its buffer is stdout's: the first write that fails may be this one
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (flushed && !std::ferror(stdout) && std::cout.good())
+    {
+        return true;
+    }
+    if (!reported)
+    {
+        reported = true;
+        // The reason is known when this flush failed; an earlier failed write left only the error flag.
+        std::cerr << "contactfx: error: standard output: write failed"
+                  << (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) << '\n';
+    }
+    return false;
+}
 
 void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
 {
@@ -35,7 +68,8 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
             },
             "UINT64"))
         ->capture_default_str();
-    command.add_option("--stats", options.stats, "Write statistics as JSON to this file");
+    command.add_option("--stats", options.stats, "Write statistics as JSON to this file")
+        ->check(NamesAFile());
     command.add_flag("--check-particles", options.checkParticles,
                      "Check every particle after every step against the world (slow): the stats count "
                      "particle_steps_inside and crossings, and spawned_inside_solid audits every start");
@@ -57,7 +91,7 @@ void AddEffectsOptions(CLI::App& command, RunOptions& options, const std::string
                     "Built-in effects: default or tutorial. Without --preset and --effects: a registered "
                     "scene's own effects, else default")
         ->check(CLI::IsMember({"default", "tutorial"}));
-    command.add_option("--effects", options.effects, effectsHelp);
+    command.add_option("--effects", options.effects, effectsHelp)->check(NamesAFile());
 }
 
 bool EffectsChosen(const RunOptions& options)

@@ -36,6 +36,18 @@ struct RunOptions
     unsigned threads = 0;        ///< --threads: 0 (default) the machine's; N forces N threads per step
 };
 
+/// The check every option and argument that names a file (input or output) gets: an explicitly empty value
+/// (`--stats ''`) names no file, so CLI11 refuses it while parsing ("<command line>: --stats: names no
+/// file", usage.h) instead of the command reading it as "not given". An option not given is not checked.
+const CLI::Validator& NamesAFile();
+
+/// Flushes standard output and tells whether everything a command printed on it so far was written. On a
+/// failed write (a full disk, `> /dev/full`), now or earlier, it reports "contactfx: error: standard
+/// output: write failed[: reason]" on stderr, once per process, and returns false. A command calls it after
+/// printing its summary and before committing its output files (outputs.h), so that a lost result leaves
+/// no output either; main() calls it last.
+bool FlushStandardOutput();
+
 /// Adds --seconds, --hz, --seed, --stats, --preset and --effects to `command`; `demo` (a command on the
 /// bundled tutorial scene) only changes the help of --effects.
 void AddRunOptions(CLI::App& command, RunOptions& options, bool demo);

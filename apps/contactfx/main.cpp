@@ -23,11 +23,8 @@
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
-#include <cerrno>
 #include <csignal>
 #include <cstdio>
-#include <cstring>
-#include <iostream>
 #include <string>
 #include <unistd.h>
 
@@ -42,23 +39,10 @@ constexpr const char* kFooter = R"(Examples:
 
 'contactfx help COMMAND' (or 'contactfx COMMAND --help') shows the options of a command.)";
 
-// Flushes standard output and reports a failed write of it (a full disk, `> /dev/full`) on stderr: what a
-// command printed is its result, so losing it is an error. Returns `result`, or kExitError when standard
-// output failed.
+// `result`, or kExitError when standard output failed (FlushStandardOutput reports it).
 int CheckStandardOutput(int result)
 {
-    errno = 0;
-    std::cout.flush(); // its buffer is stdout's: the first write that fails may be this one
-    const bool flushed = std::fflush(stdout) == 0;
-    const int error = errno;
-    if (flushed && !std::ferror(stdout) && std::cout.good())
-    {
-        return result;
-    }
-    // The reason is known when the final flush failed; an earlier failed write left only the error flag.
-    std::cerr << "contactfx: error: standard output: write failed"
-              << (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) << '\n';
-    return cfx::cli::kExitError;
+    return cfx::cli::FlushStandardOutput() ? result : cfx::cli::kExitError;
 }
 
 } // namespace

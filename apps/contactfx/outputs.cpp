@@ -27,12 +27,31 @@ std::string Quoted(const fs::path& path)
     return "\"" + path.string() + "\"";
 }
 
-// The path written to: absolute, with symbolic links resolved as far as the path exists, so that an
-// output given through a link replaces the file the link points at and leaves the link.
+// The path written to: absolute, with symbolic links resolved, so that an output given through a link
+// replaces (or creates) the file the link points at and leaves the link. weakly_canonical resolves links
+// only as far as the path exists; a dangling link at the end (to a file not written yet) is followed here
+// by hand. A chain of more links than the kernel follows (a loop) stops at its last link, which the
+// checks then refuse as the kernel does (ELOOP).
 fs::path RealPath(const fs::path& file)
 {
+    constexpr int kMaxLinks = 40; // Linux's limit on links followed in one path
     std::error_code error;
-    fs::path real = fs::weakly_canonical(fs::absolute(file, error), error);
+    fs::path real = fs::absolute(file, error);
+    for (int link = 0; !error && link <= kMaxLinks; ++link)
+    {
+        fs::path resolved = fs::weakly_canonical(real, error);
+        if (error)
+        {
+            break;
+        }
+        real = std::move(resolved);
+        if (!fs::is_symlink(fs::symlink_status(real, error)) || error)
+        {
+            return real;
+        }
+        // A dangling link (weakly_canonical stopped before it): go on at its target.
+        real = real.parent_path() / fs::read_symlink(real, error);
+    }
     return error ? fs::absolute(file) : real;
 }
 
@@ -99,7 +118,11 @@ std::string OutputProblem(const fs::path& file)
     {
         return "names no file";
     }
-    return OutputFileProblem(RealPath(file), file);
+    const fs::path real = RealPath(file);
+    // Given as a symbolic link, the folder that matters is its target's, which messages name resolved.
+    std::error_code error;
+    const bool link = fs::is_symlink(fs::symlink_status(file, error));
+    return OutputFileProblem(real, link ? real : file);
 }
 
 OutputFiles::OutputFiles() = default;

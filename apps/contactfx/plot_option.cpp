@@ -8,9 +8,11 @@ namespace cfx::cli
 
 void AddPlotOption(CLI::App& command, std::string& file)
 {
-    command.add_option(
-        "--plot", file,
-        "Write a PNG plot of intensity and particles emitted per rule over time, thresholds marked");
+    command
+        .add_option(
+            "--plot", file,
+            "Write a PNG plot of intensity and particles emitted per rule over time, thresholds marked")
+        ->check(NamesAFile());
 }
 
 void CheckPlotFile(const std::string& file)

@@ -23,7 +23,8 @@ void RegisterPresetCommand(CLI::App& app, int& result)
     command->add_option("name", options->name, "default or tutorial")
         ->required()
         ->check(CLI::IsMember({"default", "tutorial"}));
-    command->add_option("--out", options->out, "Write to this file instead of standard output");
+    command->add_option("--out", options->out, "Write to this file instead of standard output")
+        ->check(NamesAFile());
     command->callback(
         [options, &result]
         {

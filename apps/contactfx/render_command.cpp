@@ -309,10 +309,17 @@ int Render(RenderOptions options)
         MuxAudio(silentVideo, sound.WavFile(), outputs.Temporary(*muxed), options.out);
         std::filesystem::rename(outputs.Temporary(*muxed), silentVideo);
     }
-    outputs.Commit();
-    std::printf("contactfx render: wrote %s (%lld frame%s, %dx%d, %.2f s simulated)\n", options.out.c_str(),
-                frames, frames == 1 ? "" : "s", options.width, options.height,
+    // The summary is printed and flushed before the outputs are committed, so that a failed write of
+    // standard output leaves no output file either; it says what was rendered, not that it was written,
+    // which a failing Commit() (an error of its own) would make untrue.
+    std::printf("contactfx render: %s: %lld frame%s, %dx%d, %.2f s simulated\n", options.out.c_str(), frames,
+                frames == 1 ? "" : "s", options.width, options.height,
                 static_cast<double>(simulation.Time()));
+    if (!FlushStandardOutput())
+    {
+        return kExitError;
+    }
+    outputs.Commit();
     return kExitOk;
 }
 
@@ -331,12 +338,15 @@ void RegisterRenderCommand(CLI::App& app, int& result)
             "--out", options->out,
             "FILE.png (one frame), DIR/frame_%04d.png (a sequence), FILE.mp4 (with a 48 kHz audio track) "
             "or FILE.gif (ffmpeg)")
-        ->required();
+        ->required()
+        ->check(NamesAFile());
     AddRunOptions(*render, options->run, false);
-    render->add_option(
-        "--audio", options->run.audio,
-        "Also write the sound to this WAV file (48 kHz, 16-bit mono; an .mp4 gets it as its audio "
-        "track anyway; docs/sound.md)");
+    render
+        ->add_option(
+            "--audio", options->run.audio,
+            "Also write the sound to this WAV file (48 kHz, 16-bit mono; an .mp4 gets it as its audio "
+            "track anyway; docs/sound.md)")
+        ->check(NamesAFile());
     render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)");
     render->add_option("--width", options->width, "Image width, px")->capture_default_str();
     render->add_option("--height", options->height, "Image height, px")->capture_default_str();

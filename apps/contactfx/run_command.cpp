@@ -146,20 +146,30 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     {
         outputs.Write(*plotOutput, plot.Png(simulation.GetEffects(), what));
     }
-    outputs.Commit();
+    // The summary is part of the result: it is printed and flushed before the outputs are committed, so
+    // that a failed write of standard output (`> /dev/full`) leaves no output file either. It tells what
+    // was simulated, nothing a failing Commit() would make untrue; that failure is an error of its own.
     PrintSummary(simulation, options, what);
     std::fputs(sound.Summary().c_str(), stdout);
+    if (!FlushStandardOutput())
+    {
+        return kExitError;
+    }
+    outputs.Commit();
     return kExitOk;
 }
 
 void AddSoundOptions(CLI::App& command, RunOptions& options)
 {
-    command.add_option(
-        "--audio", options.audio,
-        "Write the sound of the run to this WAV file (48 kHz, 16-bit mono, synthesized from the "
-        "voices; docs/sound.md)");
-    command.add_option("--voices", options.voices,
-                       "Write the voices started and stopped as JSON Lines to this file (docs/sound.md)");
+    command
+        .add_option("--audio", options.audio,
+                    "Write the sound of the run to this WAV file (48 kHz, 16-bit mono, synthesized from the "
+                    "voices; docs/sound.md)")
+        ->check(NamesAFile());
+    command
+        .add_option("--voices", options.voices,
+                    "Write the voices started and stopped as JSON Lines to this file (docs/sound.md)")
+        ->check(NamesAFile());
 }
 
 } // namespace
@@ -172,7 +182,8 @@ void RegisterRunCommands(CLI::App& app, int& result)
         app.add_subcommand("demo", "The tutorial scene with a scripted drive and contactfx's default model");
     AddRunOptions(*demo, *demoOptions, true);
     demo->add_option("--events", demoOptions->events,
-                     "Write scrape and impact events as JSON Lines to this file");
+                     "Write scrape and impact events as JSON Lines to this file")
+        ->check(NamesAFile());
     AddSoundOptions(*demo, *demoOptions);
     AddPlotOption(*demo, *demoPlot);
     demo->callback(
@@ -194,7 +205,8 @@ void RegisterRunCommands(CLI::App& app, int& result)
                     "RUBE JSON scene: bodies move by their initial velocities and joint motors");
     AddRunOptions(*run, *runOptions, false);
     run->add_option("--events", runOptions->events,
-                    "Write scrape and impact events as JSON Lines to this file");
+                    "Write scrape and impact events as JSON Lines to this file")
+        ->check(NamesAFile());
     AddSoundOptions(*run, *runOptions);
     AddPlotOption(*run, *runPlot);
     run->callback(

@@ -44,7 +44,7 @@ void Scenario::Step(Simulation& simulation) const
 
 void AddSceneOptions(CLI::App& command, RunOptions& options, const std::string& fileHelp)
 {
-    command.add_option("scene", options.scene, fileHelp);
+    command.add_option("scene", options.scene, fileHelp)->check(NamesAFile());
     command.add_option("--scene", options.sceneName,
                        "A registered scene with its scripted drive and effects: " + SceneNames());
 }

@@ -33,7 +33,8 @@ int ReportUnknownCommand(const CLI::App& group, const std::string& name);
 ///   argument, named, with the nearest valid name when one is near;
 /// - a command that needs a command (contactfx, contactfx bench) given none: "missing command" and its
 ///   short usage (usage line and its commands);
-/// - else CLI11's message.
+/// - else CLI11's message in the project's format: "<command line>: --stats: names no file",
+///   "<command line>: files: required, but not given".
 /// Every report ends with a pointer at the --help of the command concerned.
 int ReportParseError(const CLI::App& app, const CLI::ParseError& error);
 

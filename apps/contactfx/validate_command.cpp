@@ -272,7 +272,9 @@ void RegisterValidateCommand(CLI::App& app, int& result)
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "validate", "Check RUBE scenes and effects configs; report every problem (exit 1 on any)");
-    command->add_option("files", options->files, "Scene or effects config JSON files")->required();
+    command->add_option("files", options->files, "Scene or effects config JSON files")
+        ->required()
+        ->check(NamesAFile());
     command->add_flag("--json", options->json,
                       "One JSON object per file and line: {file, kind, ok, bodies, fixtures, joints, images, "
                       "fixtures_with_material, errors: [{path, message, line, column}], warnings: [same]}");

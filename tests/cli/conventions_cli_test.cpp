@@ -121,6 +121,57 @@ TEST(CliConventions, NoCommandShowsTheShortUsage)
     EXPECT_EQ(result.output.find("A subcommand is required"), std::string::npos) << result.output;
 }
 
+// A file option or argument given an empty value names no file: refused while parsing (nothing is read,
+// simulated or written), never taken as "not given".
+TEST(CliConventions, AnEmptyFileNameIsRefused)
+{
+    const std::string run = "run --scene grinder --seconds 0.2 ";
+    // Where a command that took an empty name as "not given" would write its other output.
+    const std::string png = (ScratchDir("empty_file_name") / "x.png").string();
+    const struct
+    {
+        std::string args;
+        std::string name;
+        std::string command;
+    } cases[] = {
+        {run + "--effects ''", "--effects", "run"},
+        {run + "--stats ''", "--stats", "run"},
+        {run + "--events ''", "--events", "run"},
+        {run + "--plot ''", "--plot", "run"},
+        {run + "--audio ''", "--audio", "run"},
+        {run + "--voices ''", "--voices", "run"},
+        {"run '' --seconds 0.2", "scene", "run"},
+        {"demo --seconds 0.2 --events ''", "--events", "demo"},
+        {"preset default --out ''", "--out", "preset"},
+        {"render --demo --out ''", "--out", "render"},
+        {"render --demo --seconds 0.2 --out " + png + " --audio ''", "--audio", "render"},
+        {"validate ''", "files", "validate"},
+        {"validate --effects '' x.json", "--effects", "validate"},
+    };
+    for (const auto& refused : cases)
+    {
+        const CliResult result = RunCli(refused.args);
+        EXPECT_EQ(result.exitCode, 1) << refused.args << "\n" << result.output;
+        EXPECT_EQ(result.output, "contactfx: error: <command line>: " + refused.name +
+                                     ": names no file\nSee 'contactfx " + refused.command + " --help'.\n")
+            << refused.args;
+    }
+}
+
+// What CLI11 itself finds wrong is said in the project's format, naming the option or argument.
+TEST(CliConventions, ParseErrorsNameTheCommandLineAndTheOption)
+{
+    const CliResult noFiles = RunCli("validate");
+    EXPECT_EQ(noFiles.exitCode, 1) << noFiles.output;
+    EXPECT_EQ(noFiles.output, "contactfx: error: <command line>: files: required, but not given\n"
+                              "See 'contactfx validate --help'.\n");
+    ExpectRefused("render --demo", {"contactfx: error: <command line>: --out: required, but not given"});
+    ExpectRefused("run --scene grinder --seconds abc",
+                  {"contactfx: error: <command line>: --seconds: cannot read \"abc\" as FLOAT"});
+    ExpectRefused("run --scene grinder --preset nosuch",
+                  {"contactfx: error: <command line>: --preset: nosuch not in {default,tutorial}"});
+}
+
 // What a command prints on standard output is its result: a failed write of it (a full disk) is an error
 // on stderr and exit code 1, not a silent success.
 TEST(CliConventions, AFailedWriteOfStandardOutputIsAnError)

@@ -8,8 +8,10 @@
 #include "cli/cli_support.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstring>
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -260,6 +262,52 @@ TEST(CliOutputs, ReplacedFilesKeepTheirModeAndLinksKeepPointing)
     EXPECT_NE(FileText(dir / "real" / "e.jsonl"), "old");
     EXPECT_EQ(FilesIn(dir), (std::vector<std::string>{"e.jsonl", "real", "s.json"}));
     EXPECT_EQ(FilesIn(dir / "real"), std::vector<std::string>{"e.jsonl"});
+}
+
+// An output given as a link to a file not written yet creates that file and keeps the link; two outputs
+// that are one file through such a link are refused like any two outputs that are the same file.
+TEST(CliOutputs, DanglingLinksAreFollowedToTheirTarget)
+{
+    const fs::path dir = ScratchDir("outputs_dangling");
+    fs::create_directory(dir / "real");
+    fs::create_symlink("real/s.json", dir / "s.json"); // relative: to the link's folder
+    const CliResult result = RunCli("run --scene grinder --seconds 0.2 --stats " + (dir / "s.json").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(fs::is_symlink(dir / "s.json"));
+    EXPECT_FALSE(FileText(dir / "real" / "s.json").empty());
+    EXPECT_EQ(FilesIn(dir / "real"), std::vector<std::string>{"s.json"});
+
+    fs::create_symlink("o1.json", dir / "o1link.json");
+    ExpectError(RunCli("run --scene grinder --seconds 0.2 --stats " + (dir / "o1.json").string() +
+                       " --events " + (dir / "o1link.json").string()),
+                {"o1link.json: --events: is also the output of --stats"},
+                "same file through a dangling link");
+    fs::create_symlink("loop-b", dir / "loop-a");
+    fs::create_symlink("loop-a", dir / "loop-b");
+    ExpectError(RunCli("run --scene grinder --seconds 0.2 --stats " + (dir / "loop-a").string()),
+                {"loop-a: --stats:", std::strerror(ELOOP)}, "a loop of links");
+    EXPECT_EQ(FilesIn(dir), (std::vector<std::string>{"loop-a", "loop-b", "o1link.json", "real", "s.json"}));
+}
+
+// What a command prints is part of its result: when standard output cannot be written, the command fails
+// and writes none of its files.
+TEST(CliOutputs, AFailedWriteOfStandardOutputLeavesNoOutput)
+{
+    if (!fs::exists("/dev/full"))
+    {
+        GTEST_SKIP() << "no /dev/full";
+    }
+    const fs::path dir = ScratchDir("outputs_stdout");
+    for (const std::string& args :
+         {"render --scene grinder --seconds 0.2" + kTiny + "--out " + (dir / "v1.png").string(),
+          "run --scene grinder --seconds 0.2 --stats " + (dir / "v1.json").string() + " --audio " +
+              (dir / "v1.wav").string()})
+    {
+        // Standard output to /dev/full, standard error to the test.
+        ExpectError(RunCommand("{ " + Binary() + " " + args + " > /dev/full; }"),
+                    {"standard output: write failed"}, args);
+        EXPECT_TRUE(FilesIn(dir).empty()) << args << ": " << Join(FilesIn(dir));
+    }
 }
 
 TEST(CliOutputs, EventsStreamToDiskWhileTheRunGoes)
