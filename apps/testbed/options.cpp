@@ -4,8 +4,35 @@
 #include "harness/command_line.h"
 #include "harness/scenes.h"
 
+#include <filesystem>
+#include <system_error>
+
 namespace cfx::testbed
 {
+
+namespace
+{
+
+/// The screenshot must not replace the effects config it was made with: refused as the command line
+/// program refuses an output that is one of its inputs (apps/contactfx/outputs.cpp), also when the two
+/// names are one file through a symbolic or hard link.
+void CheckNotTheEffectsFile(const Options& options)
+{
+    if (options.effects.empty())
+    {
+        return;
+    }
+    std::error_code error; // either file missing: not the same file (a missing effects file fails later)
+    if (options.screenshot == options.effects ||
+        std::filesystem::equivalent(options.screenshot, options.effects, error))
+    {
+        throw InputError(kCommandLine, "--screenshot",
+                         options.screenshot + ": is the input file \"" + options.effects +
+                             "\" of this command: not overwritten");
+    }
+}
+
+} // namespace
 
 void CheckOptions(const Options& options, bool framesGiven)
 {
@@ -26,6 +53,7 @@ void CheckOptions(const Options& options, bool framesGiven)
             throw InputError(kCommandLine, "--screenshot", "needs --frames N (the frame to save)");
         }
         CheckOutputFile("--screenshot", options.screenshot);
+        CheckNotTheEffectsFile(options);
         CheckExtension("--screenshot", options.screenshot, ".png");
     }
 }

@@ -26,7 +26,10 @@ struct Options
 
 /// Throws InputError (file "<command line>", the flag as path) for an unknown scene, frames < 1 when
 /// given, a screenshot without frames or one OutputFileProblem (contactfx/files) refuses (a folder, a
-/// device, a read-only file, a missing or unwritable folder), or a name not ending in .png.
+/// device, a read-only file, a missing or unwritable folder), one that is the effects file (the same
+/// name, or the same file through a symbolic or hard link: "is the input file ... not overwritten"),
+/// or a name not ending in .png. Empty names are "not given" here (main.cpp refuses explicitly empty
+/// ones, command_line_errors.h).
 void CheckOptions(const Options& options, bool framesGiven);
 
 } // namespace cfx::testbed

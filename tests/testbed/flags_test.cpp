@@ -1,6 +1,8 @@
 // contactfx-testbed's command line: every bad flag is one line on stderr and exit code 1, before any
-// window opens, and no screenshot is left behind. None of these needs a display.
+// window opens, and no screenshot is left behind. None of these needs a display (one runs on Xvfb all
+// the same, to show that a run which could draw leaves its effects file alone).
 #include "contactfx/version.h"
+#include "harness/command_line.h"
 #include "testbed/testbed_support.h"
 
 #include <gtest/gtest.h>
@@ -80,6 +82,53 @@ TEST(TestbedFlags, UnknownFlagAndBadEffectsFileAreRefused)
     ExpectRefused(RunTestbed("--scene grinder --frames 1 --no-such-flag"), {"--no-such-flag"});
     const std::filesystem::path missing = ScratchDir("testbed_effects") / "missing.effects.json";
     ExpectRefused(RunTestbed("--scene grinder --frames 1 --effects " + missing.string()), {missing.string()});
+}
+
+TEST(TestbedFlags, ScreenshotDoesNotOverwriteTheEffectsFile)
+{
+    // The user trial's command, on a display: without the check the PNG replaced the config.
+    const std::filesystem::path dir = ScratchDir("testbed_screenshot_input");
+    const std::filesystem::path effects = dir / "fx3.png";
+    std::filesystem::copy_file(Scene("default.effects.json"), effects);
+    const std::string config = FileText(effects);
+    ExpectRefused(
+        RunTestbedOnXvfb("--effects " + effects.string() + " --frames 3 --screenshot " + effects.string()),
+        {kCommandLine + std::string(": --screenshot: ") + effects.string() + ": is the input file \"" +
+         effects.string() + "\" of this command: not overwritten"});
+    // The same file under another name: a symbolic link, a hard link, another spelling.
+    std::filesystem::create_symlink(effects, dir / "symbolic.png");
+    std::filesystem::create_hard_link(effects, dir / "hard.png");
+    for (const std::filesystem::path& screenshot :
+         {dir / "symbolic.png", dir / "hard.png", dir / "." / "fx3.png"})
+    {
+        ExpectRefused(
+            RunTestbed("--effects " + effects.string() + " --frames 3 --screenshot " + screenshot.string()),
+            {"--screenshot", screenshot.string(), "is the input file", "not overwritten"});
+    }
+    EXPECT_TRUE(FileText(effects) == config) << effects << " was replaced"; // not a dump of a PNG
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "symbolic.png"));
+}
+
+TEST(TestbedFlags, AnExplicitlyEmptyFileIsRefused)
+{
+    // Not taken as "not given": `--effects ''` ran the scene's own effects, `--screenshot ''` saved nothing.
+    ExpectRefused(RunTestbed("--scene grinder --frames 1 --effects ''"),
+                  {kCommandLine + std::string(": --effects: names no file")});
+    ExpectRefused(RunTestbed("--scene grinder --frames 3 --screenshot ''"),
+                  {kCommandLine + std::string(": --screenshot: names no file")});
+}
+
+TEST(TestbedFlags, ParseErrorsNameTheCommandLineAndTheFlag)
+{
+    // As CheckOptions' own errors: "contactfx-testbed: error: <command line>: --frames: ...".
+    const std::string frames = "contactfx-testbed: error: " + std::string(kCommandLine) + ": --frames: ";
+    ExpectRefused(RunTestbed("--frames 1e3"), {frames, "whole number", "1e3"});
+    ExpectRefused(RunTestbed("--frames"), {frames + "needs a whole number"});
+    ExpectRefused(RunTestbed("--frames 1 --frames 2"), {frames + "given more than once"});
+    ExpectRefused(RunTestbed("--frames 1 --no-such-flag"),
+                  {std::string(kCommandLine) + ": --no-such-flag: unknown flag"});
+    ExpectRefused(RunTestbed("--frames 1 stray"),
+                  {std::string(kCommandLine) + ": stray: unexpected argument"});
 }
 
 TEST(TestbedFlags, NoDisplayIsAClearError)

@@ -1,0 +1,113 @@
+#include "command_line_errors.h"
+
+#include "harness/command_line.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace cfx::testbed
+{
+
+namespace
+{
+
+/// What a value of CLI11's type name `type` is, in words ("INT": "a whole number").
+std::string TypeInWords(const std::string& type)
+{
+    if (type == "INT" || type == "UINT")
+    {
+        return "a whole number";
+    }
+    if (type == "FLOAT")
+    {
+        return "a number";
+    }
+    return type.empty() || type == "TEXT" ? std::string("a value") : type;
+}
+
+/// The option of `app` whose name `message` mentions first (followed by ':', ' ' or the end, so that
+/// "--scene" is not found in "--scenes"), or nullptr.
+const CLI::Option* OptionNamedIn(const CLI::App& app, const std::string& message, std::size_t& at)
+{
+    const CLI::Option* named = nullptr;
+    at = std::string::npos;
+    for (const CLI::Option* option : app.get_options())
+    {
+        const std::string name = option->get_name();
+        for (std::size_t found = message.find(name); found != std::string::npos;
+             found = message.find(name, found + 1))
+        {
+            const std::size_t end = found + name.size();
+            const bool wholeName = end == message.size() || message[end] == ':' || message[end] == ' ';
+            if (wholeName && found < at)
+            {
+                named = option;
+                at = found;
+            }
+            if (wholeName)
+            {
+                break;
+            }
+        }
+    }
+    return named;
+}
+
+} // namespace
+
+Diagnostic DescribeParseError(const CLI::App& app, const CLI::ParseError& error)
+{
+    const std::vector<std::string> leftovers = app.remaining();
+    if (!leftovers.empty())
+    {
+        const std::string& argument = leftovers.front();
+        const bool flagLike = argument.size() > 1 && argument.front() == '-';
+        return Diagnostic{kCommandLine, argument,
+                          std::string(flagLike ? "unknown flag" : "unexpected argument") + " (see --help)"};
+    }
+    const std::string message = error.what();
+    std::size_t at = 0;
+    const CLI::Option* option = OptionNamedIn(app, message, at);
+    if (option == nullptr)
+    {
+        return Diagnostic{kCommandLine, "", message};
+    }
+    if (dynamic_cast<const CLI::ConversionError*>(&error) != nullptr && !option->results().empty())
+    {
+        return Diagnostic{kCommandLine, option->get_name(),
+                          "expected " + TypeInWords(option->get_type_name()) + ", found \"" +
+                              CLI::detail::join(option->results()) + "\""};
+    }
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr)
+    {
+        if (option->results().empty())
+        {
+            return Diagnostic{kCommandLine, option->get_name(),
+                              "needs " + TypeInWords(option->get_type_name()) + " (see --help)"};
+        }
+        if (option->count() > 1)
+        {
+            return Diagnostic{kCommandLine, option->get_name(), "given more than once"};
+        }
+    }
+    // Anything else: CLI11's words after the name ("--frames: ...").
+    std::string rest = message.substr(at + option->get_name().size());
+    rest.erase(0, std::min(rest.find_first_not_of(": ="), rest.size()));
+    return Diagnostic{kCommandLine, option->get_name(), rest.empty() ? message : rest};
+}
+
+void CheckFilesNamed(std::initializer_list<const CLI::Option*> fileOptions)
+{
+    for (const CLI::Option* option : fileOptions)
+    {
+        const std::vector<std::string>& values = option->results();
+        if (option->count() > 0 &&
+            std::any_of(values.begin(), values.end(), [](const std::string& value) { return value.empty(); }))
+        {
+            throw InputError(kCommandLine, option->get_name(), "names no file");
+        }
+    }
+}
+
+} // namespace cfx::testbed
