@@ -17,16 +17,7 @@ struct Grinder : TestWorld
 {
     Grinder()
     {
-        b2BodyDef slabDef;
-        slabDef.type = b2_kinematicBody;
-        slabDef.position = b2Vec2(0.0f, -0.5f);
-        slab = world->CreateBody(&slabDef);
-        b2PolygonShape slabShape;
-        slabShape.SetAsBox(60.0f, 0.5f);
-        b2FixtureDef slabFixture;
-        slabFixture.shape = &slabShape;
-        slabFixture.friction = 0.8f;
-        slab->CreateFixture(&slabFixture);
+        slab = CreateBox(b2Vec2(0.0f, -0.5f), 60.0f, 0.5f, 0.8f, b2_kinematicBody);
         slab->SetLinearVelocity(b2Vec2(8.0f, 0.0f));
         block = CreateBox(b2Vec2(0.0f, 0.25f), 0.5f, 0.25f, 0.5f);
         CreateBox(b2Vec2(1.0f, 0.75f), 0.5f, 0.5f, 0.0f, b2_staticBody); // the wall holding the block

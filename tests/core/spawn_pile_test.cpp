@@ -125,16 +125,7 @@ PileResult DropPile(EffectsConfig config, float hz, float seconds, bool checkSta
 PileResult Crevice(float hz)
 {
     TestWorld scene;
-    b2BodyDef slabDef;
-    slabDef.type = b2_kinematicBody;
-    slabDef.position = b2Vec2(0.0f, -0.5f);
-    b2Body* slab = scene.world->CreateBody(&slabDef);
-    b2PolygonShape slabShape;
-    slabShape.SetAsBox(60.0f, 0.5f);
-    b2FixtureDef slabFixture;
-    slabFixture.shape = &slabShape;
-    slabFixture.friction = 0.8f;
-    slab->CreateFixture(&slabFixture);
+    b2Body* slab = scene.CreateBox(b2Vec2(0.0f, -0.5f), 60.0f, 0.5f, 0.8f, b2_kinematicBody);
     slab->SetLinearVelocity(b2Vec2(8.0f, 0.0f));
     const float gap = 0.005f; // m between cores: less than a spark's diameter plus the skins
     b2Body* block = scene.CreateBox(b2Vec2(0.0f, 0.25f + gap), 0.5f, 0.25f, 0.5f);
