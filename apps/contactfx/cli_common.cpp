@@ -18,15 +18,6 @@
 namespace cfx::cli
 {
 
-const CLI::Validator& NamesAFile()
-{
-    // No description: the help shows the option's type as before.
-    static const CLI::Validator check(
-        [](const std::string& value) { return value.empty() ? std::string("names no file") : std::string(); },
-        "");
-    return check;
-}
-
 bool FlushStandardOutput()
 {
     static bool reported = false;

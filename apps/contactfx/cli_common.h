@@ -4,6 +4,7 @@
 #include "contactfx/config.h"
 #include "contactfx/scene/rube.h"
 #include "harness/command_line.h" // kCommandLine, CheckExtension
+#include "harness/parse_errors.h" // NamesAFile: on every option and argument that names a file
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -35,11 +36,6 @@ struct RunOptions
     bool checkParticles = false; ///< ParticleSystemOptions::checkParticles
     unsigned threads = 0;        ///< --threads: 0 (default) the machine's; N forces N threads per step
 };
-
-/// The check every option and argument that names a file (input or output) gets: an explicitly empty value
-/// (`--stats ''`) names no file, so CLI11 refuses it while parsing ("<command line>: --stats: names no
-/// file", usage.h) instead of the command reading it as "not given". An option not given is not checked.
-const CLI::Validator& NamesAFile();
 
 /// Flushes standard output and tells whether everything a command printed on it so far was written. On a
 /// failed write (a full disk, `> /dev/full`), now or earlier, it reports "contactfx: error: standard

@@ -81,42 +81,6 @@ int PrintShortUsage(const CLI::App& group)
     return kExitError;
 }
 
-// CLI11's message about an option or argument of `command` ("--stats: names no file", "files is
-// required") in the project's format, "<command line>: NAME: what is wrong"; a message that starts with no
-// name of `command` stays as it is after "<command line>: ".
-std::string CommandLineProblem(const CLI::App& command, const std::string& message)
-{
-    for (const CLI::Option* option : command.get_options())
-    {
-        const std::string name = option->get_name();
-        if (message.rfind(name, 0) != 0)
-        {
-            continue;
-        }
-        const std::string rest = message.substr(name.size());
-        if (rest == " is required")
-        {
-            return std::string(kCommandLine) + ": " + name + ": required, but not given";
-        }
-        if (rest.rfind(": ", 0) == 0) // not "--debug-layers: ..." for --debug
-        {
-            return std::string(kCommandLine) + ": " + name + rest;
-        }
-    }
-    // A value CLI11 could not read: "Could not convert: --seconds = abc".
-    const std::string unreadable = "Could not convert: ";
-    const std::size_t equals = message.find(" = ");
-    if (message.rfind(unreadable, 0) == 0 && equals != std::string::npos)
-    {
-        const std::string name = message.substr(unreadable.size(), equals - unreadable.size());
-        const CLI::Option* option = command.get_option_no_throw(name);
-        const std::string type = option != nullptr ? option->get_type_name() : std::string();
-        return std::string(kCommandLine) + ": " + name + ": cannot read \"" + message.substr(equals + 3) +
-               "\"" + (type.empty() ? std::string() : " as " + type);
-    }
-    return std::string(kCommandLine) + ": " + message;
-}
-
 } // namespace
 
 std::string CommandPath(const CLI::App& command)
@@ -188,7 +152,7 @@ int ReportParseError(const CLI::App& app, const CLI::ParseError& error)
     {
         return PrintShortUsage(innermost);
     }
-    return Fail(innermost, CommandLineProblem(innermost, error.what()));
+    return Fail(innermost, DescribeParseError(innermost, error).ToString());
 }
 
 } // namespace cfx::cli

@@ -6,9 +6,9 @@
 // Exit code 0 on success (and for --help and --version), 1 on any error (one line on stderr naming the
 // flag or file: "contactfx-testbed: error: <command line>: --frames: ...").
 #include "app.h"
-#include "command_line_errors.h"
 #include "contactfx/error.h"
 #include "contactfx/version.h"
+#include "harness/parse_errors.h"
 #include "harness/scenes.h"
 #include "keys.h"
 #include "options.h"
@@ -34,13 +34,13 @@ int main(int argc, char** argv)
     cfx::testbed::Options options;
     CLI::App app{"contactfx-testbed: contactfx's effects live (GLFW, OpenGL 3, Dear ImGui)"};
     app.add_option("--scene", options.scene, "Scene to open: " + cfx::SceneNames())->capture_default_str();
-    const CLI::Option* effects =
-        app.add_option("--effects", options.effects, "Effects config JSON replacing the scene's");
+    app.add_option("--effects", options.effects, "Effects config JSON replacing the scene's")
+        ->check(cfx::NamesAFile());
     CLI::Option* frames = app.add_option("--frames", options.frames,
                                          "Run this many frames (one simulation step each) without "
                                          "interaction, drawing the last few, then exit");
-    const CLI::Option* screenshot =
-        app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG");
+    app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG")
+        ->check(cfx::NamesAFile());
     app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");
     app.add_flag("--debug", options.debug,
                  "Start with every debug layer on: contact points by intensity, normals, normal impulses, "
@@ -58,11 +58,10 @@ int main(int argc, char** argv)
     }
     catch (const CLI::ParseError& error)
     {
-        return Fail(cfx::testbed::DescribeParseError(app, error).ToString());
+        return Fail(cfx::DescribeParseError(app, error).ToString());
     }
     try
     {
-        cfx::testbed::CheckFilesNamed({effects, screenshot});
         cfx::testbed::CheckOptions(options, frames->count() > 0);
         return cfx::testbed::RunTestbed(options);
     }

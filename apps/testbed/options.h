@@ -28,8 +28,8 @@ struct Options
 /// given, a screenshot without frames or one OutputFileProblem (contactfx/files) refuses (a folder, a
 /// device, a read-only file, a missing or unwritable folder), one that is the effects file (the same
 /// name, or the same file through a symbolic or hard link: "is the input file ... not overwritten"),
-/// or a name not ending in .png. Empty names are "not given" here (main.cpp refuses explicitly empty
-/// ones, command_line_errors.h).
+/// or a name not ending in .png. Empty names are "not given" here (explicitly empty ones are refused
+/// while parsing: harness/parse_errors.h, NamesAFile).
 void CheckOptions(const Options& options, bool framesGiven);
 
 } // namespace cfx::testbed

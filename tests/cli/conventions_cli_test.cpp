@@ -167,7 +167,7 @@ TEST(CliConventions, ParseErrorsNameTheCommandLineAndTheOption)
                               "See 'contactfx validate --help'.\n");
     ExpectRefused("render --demo", {"contactfx: error: <command line>: --out: required, but not given"});
     ExpectRefused("run --scene grinder --seconds abc",
-                  {"contactfx: error: <command line>: --seconds: cannot read \"abc\" as FLOAT"});
+                  {"contactfx: error: <command line>: --seconds: expected a number, found \"abc\""});
     ExpectRefused("run --scene grinder --preset nosuch",
                   {"contactfx: error: <command line>: --preset: nosuch not in {default,tutorial}"});
 }

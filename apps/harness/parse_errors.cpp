@@ -1,4 +1,4 @@
-#include "command_line_errors.h"
+#include "harness/parse_errors.h"
 
 #include "harness/command_line.h"
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace cfx::testbed
+namespace cfx
 {
 
 namespace
@@ -79,6 +79,10 @@ Diagnostic DescribeParseError(const CLI::App& app, const CLI::ParseError& error)
                           "expected " + TypeInWords(option->get_type_name()) + ", found \"" +
                               CLI::detail::join(option->results()) + "\""};
     }
+    if (dynamic_cast<const CLI::RequiredError*>(&error) != nullptr)
+    {
+        return Diagnostic{kCommandLine, option->get_name(), "required, but not given"};
+    }
     if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr)
     {
         if (option->results().empty())
@@ -97,17 +101,13 @@ Diagnostic DescribeParseError(const CLI::App& app, const CLI::ParseError& error)
     return Diagnostic{kCommandLine, option->get_name(), rest.empty() ? message : rest};
 }
 
-void CheckFilesNamed(std::initializer_list<const CLI::Option*> fileOptions)
+const CLI::Validator& NamesAFile()
 {
-    for (const CLI::Option* option : fileOptions)
-    {
-        const std::vector<std::string>& values = option->results();
-        if (option->count() > 0 &&
-            std::any_of(values.begin(), values.end(), [](const std::string& value) { return value.empty(); }))
-        {
-            throw InputError(kCommandLine, option->get_name(), "names no file");
-        }
-    }
+    // No description: the help shows the option's type as before.
+    static const CLI::Validator check(
+        [](const std::string& value) { return value.empty() ? std::string("names no file") : std::string(); },
+        "");
+    return check;
 }
 
-} // namespace cfx::testbed
+} // namespace cfx
