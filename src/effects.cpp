@@ -139,10 +139,8 @@ struct Effects::Internals
     {
         // A listener the application set on the world before is kept and forwarded to, as one given here.
         worldListener = world.GetContactManager().m_contactListener;
-        const bool worldHasOwn = worldListener != nullptr && worldListener != BoxDefaultContactListener();
-        tracker.SetForward(def.contactListener != nullptr ? def.contactListener
-                           : worldHasOwn                  ? worldListener
-                                                          : nullptr);
+        b2ContactListener* worldOwn = worldListener == BoxDefaultContactListener() ? nullptr : worldListener;
+        tracker.SetForward(def.contactListener != nullptr ? def.contactListener : worldOwn);
         tracker.Reserve(config.budget.contacts);
     }
 

@@ -468,14 +468,17 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.normal = surfaceNormal;
     query.slip = slip;
     query.radius = type.radius;
-    if (rule.placement == SpawnPlacement::surface) // the tutorial's drop looks 1 m each way, as documented
+    SpawnPoint start;
+    if (rule.placement == SpawnPlacement::tutorialDrop) // looks 1 m each way, as documented
+    {
+        start = FindTutorialDropPoint(context.world, query, &context.particleBodies);
+    }
+    else
     {
         query.searchDistance = surfaceIsA ? SearchDistance(*fixtureB, contact->GetChildIndexB())
                                           : SearchDistance(*fixtureA, contact->GetChildIndexA());
+        start = FindSpawnPoint(context.world, query, &context.particleBodies);
     }
-    const SpawnPoint start = rule.placement == SpawnPlacement::tutorialDrop
-                                 ? FindTutorialDropPoint(context.world, query, &context.particleBodies)
-                                 : FindSpawnPoint(context.world, query, &context.particleBodies);
     if (!start.outside)
     {
         // No free start near the contact (a pile, a crevice): never inside a solid, so not at all.

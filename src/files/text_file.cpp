@@ -75,6 +75,7 @@ std::string OutputFileProblem(const std::filesystem::path& file, const std::file
     {
         return "names no file";
     }
+    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
     struct stat info = {};
     if (::stat(file.c_str(), &info) == 0)
     {
@@ -108,14 +109,13 @@ std::string OutputFileProblem(const std::filesystem::path& file, const std::file
     }
     else if (errno == ENOTDIR)
     {
-        return NotAFolderOnTheWay(given.empty() ? file : given);
+        return NotAFolderOnTheWay(named);
     }
     else if (errno != ENOENT)
     {
         return "cannot be written: " + Strerror(errno);
     }
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
     const fs::path shown = named.parent_path().empty() ? fs::path(".") : named.parent_path();
     struct stat folderInfo = {};
     if (::stat(folder.c_str(), &folderInfo) != 0)
