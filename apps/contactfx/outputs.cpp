@@ -27,34 +27,6 @@ std::string Quoted(const fs::path& path)
     return "\"" + path.string() + "\"";
 }
 
-// The path written to: absolute, with symbolic links resolved, so that an output given through a link
-// replaces (or creates) the file the link points at and leaves the link. weakly_canonical resolves links
-// only as far as the path exists; a dangling link at the end (to a file not written yet) is followed here
-// by hand. A chain of more links than the kernel follows (a loop) stops at its last link, which the
-// checks then refuse as the kernel does (ELOOP).
-fs::path RealPath(const fs::path& file)
-{
-    constexpr int kMaxLinks = 40; // Linux's limit on links followed in one path
-    std::error_code error;
-    fs::path real = fs::absolute(file, error);
-    for (int link = 0; !error && link <= kMaxLinks; ++link)
-    {
-        fs::path resolved = fs::weakly_canonical(real, error);
-        if (error)
-        {
-            break;
-        }
-        real = std::move(resolved);
-        if (!fs::is_symlink(fs::symlink_status(real, error)) || error)
-        {
-            return real;
-        }
-        // A dangling link (weakly_canonical stopped before it): go on at its target.
-        real = real.parent_path() / fs::read_symlink(real, error);
-    }
-    return error ? fs::absolute(file) : real;
-}
-
 std::string Strerror(int error)
 {
     return std::strerror(error != 0 ? error : EIO);
@@ -112,19 +84,6 @@ void RestoreHandlers()
 
 } // namespace
 
-std::string OutputProblem(const fs::path& file)
-{
-    if (file.empty())
-    {
-        return "names no file";
-    }
-    const fs::path real = RealPath(file);
-    // Given as a symbolic link, the folder that matters is its target's, which messages name resolved.
-    std::error_code error;
-    const bool link = fs::is_symlink(fs::symlink_status(file, error));
-    return OutputFileProblem(real, link ? real : file);
-}
-
 OutputFiles::OutputFiles() = default;
 
 OutputFiles::~OutputFiles()
@@ -152,7 +111,7 @@ OutputFiles::Handle OutputFiles::Add(const std::string& flag, const fs::path& fi
     Output output;
     output.flag = flag;
     output.target = file;
-    output.real = RealPath(file);
+    output.real = WrittenPath(file);
     m_outputs.push_back(std::move(output));
     return m_outputs.size() - 1;
 }
@@ -176,7 +135,7 @@ void OutputFiles::Prepare()
     std::map<std::pair<dev_t, ino_t>, fs::path> inputIds;
     for (const fs::path& input : m_inputs)
     {
-        inputPaths.emplace(RealPath(input).string(), input);
+        inputPaths.emplace(WrittenPath(input).string(), input);
         struct stat info = {};
         if (::stat(input.c_str(), &info) == 0)
         {
@@ -190,7 +149,7 @@ void OutputFiles::Prepare()
         {
             continue; // beside another output, whose checks cover its folder
         }
-        const std::string problem = OutputProblem(output.target);
+        const std::string problem = OutputFileProblem(output.target);
         if (!problem.empty())
         {
             refuse(output, problem);
@@ -374,7 +333,7 @@ void OutputFiles::Commit()
         }
         ::close(descriptor);
         // Something may have taken the target's place while the command ran.
-        const std::string problem = OutputFileProblem(output.real, output.target);
+        const std::string problem = OutputFileProblem(output.target);
         if (!problem.empty())
         {
             Fail(output, problem);

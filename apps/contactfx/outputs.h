@@ -30,12 +30,6 @@
 namespace cfx::cli
 {
 
-/// Why `file` (as given) cannot be an output, or "" when it can: its folder is missing or not a folder
-/// (`out/afile/x.png` with out/afile a file: "\"out/afile\" is not a folder"), or OutputFileProblem's
-/// reasons (a directory, a device, a read-only file, ...). What Prepare() checks for every output; a
-/// command may call it earlier, once for a pattern of many files (render's PNG sequence).
-std::string OutputProblem(const std::filesystem::path& file);
-
 class OutputFiles
 {
 public:
@@ -94,7 +88,7 @@ private:
     {
         std::string flag;
         std::filesystem::path target;    ///< as given
-        std::filesystem::path real;      ///< where it is written: symbolic links resolved
+        std::filesystem::path real;      ///< where it is written: WrittenPath(target)
         std::filesystem::path temporary; ///< empty until Prepare()
         std::FILE* stream = nullptr;     ///< Append()'s stream, open until Commit()
         bool scratch = false;            ///< AddScratch(): removed at Commit(), never renamed

@@ -13,6 +13,7 @@
 #include "audio_mux.h"
 #include "cli_common.h"
 #include "contactfx/error.h"
+#include "contactfx/files/text_file.h"
 #include "contactfx/render/frame.h"
 #include "contactfx/render/frame_output.h"
 #include "outputs.h"
@@ -108,7 +109,7 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
     }
     // What the target is comes before what its name says (`--out /dev/full` is a device), and a
     // sequence's folder is checked here once, not once per frame.
-    if (const std::string problem = OutputProblem(options.out); !problem.empty())
+    if (const std::string problem = OutputFileProblem(options.out); !problem.empty())
     {
         throw InputError(options.out, "--out", problem);
     }

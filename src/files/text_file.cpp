@@ -15,6 +15,7 @@
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
 
 namespace cfx
 {
@@ -68,14 +69,47 @@ std::string NotAFolderOnTheWay(const std::filesystem::path& named)
 
 } // namespace
 
-std::string OutputFileProblem(const std::filesystem::path& file, const std::filesystem::path& given)
+std::filesystem::path WrittenPath(const std::filesystem::path& file)
 {
     namespace fs = std::filesystem;
-    if (!file.has_filename() || file.filename() == "." || file.filename() == "..")
+    constexpr int kMaxLinks = 40; // Linux's limit on links followed in one path
+    std::error_code error;
+    fs::path real = fs::absolute(file, error);
+    for (int link = 0; !error && link <= kMaxLinks; ++link)
+    {
+        // weakly_canonical follows links only as far as the path exists.
+        fs::path resolved = fs::weakly_canonical(real, error);
+        if (error)
+        {
+            break;
+        }
+        real = std::move(resolved);
+        if (!fs::is_symlink(fs::symlink_status(real, error)) || error)
+        {
+            return real;
+        }
+        // A dangling link, where weakly_canonical stopped: go on at its target.
+        real = real.parent_path() / fs::read_symlink(real, error);
+    }
+    if (error)
+    {
+        std::error_code ignored;
+        return fs::absolute(file, ignored);
+    }
+    return real;
+}
+
+std::string OutputFileProblem(const std::filesystem::path& given)
+{
+    namespace fs = std::filesystem;
+    if (!given.has_filename() || given.filename() == "." || given.filename() == "..")
     {
         return "names no file";
     }
-    const fs::path& named = given.empty() ? file : given; // the folder as the user wrote it
+    const fs::path file = WrittenPath(given);
+    std::error_code error;
+    const bool link = fs::is_symlink(fs::symlink_status(given, error));
+    const fs::path& named = link ? file : given; // the folder as the user wrote it, or the link's target's
     struct stat info = {};
     if (::stat(file.c_str(), &info) == 0)
     {
@@ -140,11 +174,12 @@ void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view
     {
         throw InputError(path.string(), "", problem);
     }
+    const std::filesystem::path target = WrittenPath(path);
     std::filesystem::path temporary;
     std::FILE* file = nullptr;
     for (int attempt = 0; attempt < 16 && file == nullptr; ++attempt)
     {
-        temporary = TemporaryPathBeside(path, attempt);
+        temporary = TemporaryPathBeside(target, attempt);
         file = std::fopen(temporary.string().c_str(), "wbx"); // C11 exclusive mode: never reuse a file
         if (file == nullptr && errno != EEXIST)
         {
@@ -157,6 +192,10 @@ void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view
     }
 
     bool ok = std::fwrite(contents.data(), 1, contents.size(), file) == contents.size();
+    if (struct stat existing = {}; ::stat(target.c_str(), &existing) == 0)
+    {
+        ok = ok && ::fchmod(::fileno(file), existing.st_mode & 07777) == 0; // the replaced file's mode
+    }
     ok = ok && std::fflush(file) == 0;
     ok = ok && ::fsync(::fileno(file)) == 0;
     const int writeError = errno;
@@ -169,7 +208,7 @@ void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view
     }
 
     std::error_code error;
-    std::filesystem::rename(temporary, path, error);
+    std::filesystem::rename(temporary, target, error);
     if (error)
     {
         std::error_code ignored;

@@ -103,8 +103,6 @@ TEST(TextFile, AMissingFolderIsNamedAsGiven)
 {
     EXPECT_EQ(OutputFileProblem("no_such_folder_cfx/out.png"),
               "folder \"no_such_folder_cfx\" does not exist");
-    EXPECT_EQ(OutputFileProblem("/tmp/x/no_such_folder_cfx/out.png", "given/out.png"),
-              "folder \"given\" does not exist");
     const std::string message = WriteError("no_such_folder_cfx/out.png", "bytes");
     EXPECT_NE(message.find("no_such_folder_cfx/out.png"), std::string::npos) << message;
     EXPECT_FALSE(fs::exists("no_such_folder_cfx"));
@@ -120,6 +118,49 @@ TEST(TextFile, AFileOnTheWayToTheFolderIsNamed)
     const std::string message = WriteError(dir / "afile" / "out.png", "bytes");
     EXPECT_NE(message.find(named), std::string::npos) << message;
     EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"afile"});
+}
+
+TEST(TextFile, AWriteThroughASymbolicLinkReplacesItsTargetAndKeepsTheLink)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_link");
+    fs::create_directories(dir / "real");
+    WriteTextFileAtomically(dir / "real" / "old.png", "old");
+    fs::create_symlink("real/old.png", dir / "to_old.png");
+    fs::create_symlink("real/new.png", dir / "to_new.png"); // dangling: its target is not written yet
+    fs::create_symlink("to_new.png", dir / "to_to_new.png");
+    EXPECT_EQ(WrittenPath(dir / "to_to_new.png"), fs::canonical(dir) / "real" / "new.png");
+
+    WriteTextFileAtomically(dir / "to_old.png", "replaced");
+    WriteTextFileAtomically(dir / "to_to_new.png", "created");
+    EXPECT_TRUE(fs::is_symlink(dir / "to_old.png"));
+    EXPECT_TRUE(fs::is_symlink(dir / "to_new.png"));
+    EXPECT_TRUE(fs::is_symlink(dir / "to_to_new.png"));
+    EXPECT_EQ(ReadTextFile(dir / "real" / "old.png"), "replaced");
+    EXPECT_EQ(ReadTextFile(dir / "real" / "new.png"), "created");
+    EXPECT_EQ(FilesIn(dir / "real"), (std::vector<fs::path>{"new.png", "old.png"}));
+
+    // A link into a missing folder names the folder it leads to; a loop is refused, and stays a loop.
+    fs::create_symlink("gone/x.png", dir / "to_gone.png");
+    EXPECT_EQ(OutputFileProblem(dir / "to_gone.png"),
+              "folder \"" + (fs::canonical(dir) / "gone").string() + "\" does not exist");
+    fs::create_symlink("loop_b.png", dir / "loop_a.png");
+    fs::create_symlink("loop_a.png", dir / "loop_b.png");
+    EXPECT_NE(WriteError(dir / "loop_a.png", "x"), "");
+    EXPECT_TRUE(fs::is_symlink(dir / "loop_a.png"));
+    EXPECT_EQ(FilesIn(dir), (std::vector<fs::path>{"loop_a.png", "loop_b.png", "real", "to_gone.png",
+                                                   "to_new.png", "to_old.png", "to_to_new.png"}));
+}
+
+TEST(TextFile, AReplacedFileKeepsItsMode)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_mode");
+    const fs::path file = dir / "shared.json";
+    WriteTextFileAtomically(file, "first");
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    WriteTextFileAtomically(file, "second");
+    EXPECT_EQ(ReadTextFile(file), "second");
+    EXPECT_EQ(fs::status(file).permissions(),
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
 }
 
 TEST(TextFile, ReadingAFolderOrAMissingFileNamesIt)

@@ -109,6 +109,19 @@ TEST(TestbedFlags, ScreenshotDoesNotOverwriteTheEffectsFile)
     EXPECT_TRUE(std::filesystem::is_symlink(dir / "symbolic.png"));
 }
 
+TEST(TestbedFlags, AScreenshotThroughASymbolicLinkIsWrittenToItsTarget)
+{
+    // As the command line's outputs: the link stays and its target (here not there yet) gets the PNG.
+    const std::filesystem::path dir = ScratchDir("testbed_screenshot_link");
+    std::filesystem::create_directories(dir / "shots");
+    std::filesystem::create_symlink("shots/latest.png", dir / "latest.png");
+    const CliResult result =
+        RunTestbedOnXvfb("--scene grinder --frames 2 --screenshot " + (dir / "latest.png").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "latest.png"));
+    EXPECT_EQ(FileText(dir / "shots" / "latest.png").substr(1, 3), "PNG");
+}
+
 TEST(TestbedFlags, AnExplicitlyEmptyFileIsRefused)
 {
     // Not taken as "not given": `--effects ''` ran the scene's own effects, `--screenshot ''` saved nothing.

@@ -16,17 +16,24 @@ namespace cfx
 /// The file's bytes. Throws InputError naming the file when it is missing, a directory or unreadable.
 std::string ReadTextFile(const std::filesystem::path& path);
 
-/// Why `file` cannot be written as an output, or an empty string when it can. Refused: a path that
-/// names no file; an existing directory, device (`/dev/full`, `/dev/null`), FIFO or other non-regular
-/// file; an existing file with no write permission bit (a mode 444 file, even for root, who could write
-/// it) or that cannot be written; a folder that is missing, not writable or not a folder (the first file on
-/// the way to it is named: `"out/afile" is not a folder`). Messages name the folder as in `given` (the path
-/// as the user wrote it) when that is not empty, e.g. "is a device, not a regular file: give a file to
-/// write".
-std::string OutputFileProblem(const std::filesystem::path& file, const std::filesystem::path& given = {});
+/// The file that a write of `file` replaces or creates: `file` made absolute, with its symbolic links
+/// followed, a dangling one at the end too (to the file it names, which the write creates), so that an
+/// output given through a link replaces the link's target and keeps the link. A chain of links longer than
+/// the kernel follows (a loop) stops at its last link, which OutputFileProblem then refuses (ELOOP).
+std::filesystem::path WrittenPath(const std::filesystem::path& file);
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: readers see the old
-/// file or the new one, never half of one. Throws InputError naming `path` when OutputFileProblem
+/// Why `file` cannot be written as an output, or an empty string when it can, e.g. "is a device, not a
+/// regular file: give a file to write". The file checked is WrittenPath(file). Refused: a path that names
+/// no file; an existing directory, device (`/dev/full`, `/dev/null`), FIFO or other non-regular file; an
+/// existing file with no write permission bit (a mode 444 file, even for root, who could write it) or that
+/// cannot be written; a folder that is missing, not writable or not a folder (the first file on the way to
+/// it is named: `"out/afile" is not a folder`). Messages name folders as `file` names them, or as its
+/// target does when `file` is a symbolic link.
+std::string OutputFileProblem(const std::filesystem::path& file);
+
+/// Writes `bytes` to a temporary file beside WrittenPath(path), then renames it over that file: readers see
+/// the old file or the new one, never half of one; a file replaced keeps its mode, and a symbolic link
+/// given as `path` stays. Throws InputError naming `path` when OutputFileProblem
 /// refuses it (nothing is written then) or when writing fails (the temporary file is removed).
 void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
