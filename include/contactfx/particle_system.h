@@ -156,8 +156,8 @@ public:
     /// SayGoodbye(b2Fixture*) with fixture->GetBody(), or before b2World::DestroyBody. Any other body
     /// (or null): nothing happens. Effects calls it for its own system.
     void ForgetBody(const b2Body* body);
-    /// Rebuilds the static geometry cache at the next step. Only needed after editing a static
-    /// fixture's shape in place; everything else is detected (docs/particles.md).
+    /// Rebuilds the static geometry cache at the next step. Never needed: every change of the static
+    /// geometry, a shape edited in place too, is detected (docs/particles.md).
     void InvalidateStaticGeometry();
 
     ParticleView View() const;

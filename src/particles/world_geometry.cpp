@@ -51,32 +51,63 @@ public:
     }
     void Add(float value) { Add(static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value))); }
     void Add(b2Vec2 value) { Add(Word(value)); }
-    /// The boxes of a fixture's children. A chain has hundreds, and one FNV chain over them waits a
-    /// multiplication's latency per word; four chains, one for every fourth child, run side by side.
-    void AddChildBoxes(const b2Fixture& fixture, int children)
+    /// `count` points. A chain has hundreds, and one FNV chain over them waits a multiplication's latency
+    /// per word; four chains, one for every fourth point, run side by side.
+    void Add(const b2Vec2* points, int count)
     {
         std::uint64_t lanes[4] = {kFnvBasis, kFnvBasis + 1, kFnvBasis + 2, kFnvBasis + 3};
-        int child = 0;
-        auto add = [&](std::uint64_t& lane, int index)
+        int point = 0;
+        for (; point + 4 <= count; point += 4)
         {
-            const b2AABB& box = fixture.GetAABB(index);
-            lane = (lane ^ Word(box.lowerBound)) * kFnvPrime;
-            lane = (lane ^ Word(box.upperBound)) * kFnvPrime;
-        };
-        for (; child + 4 <= children; child += 4)
-        {
-            add(lanes[0], child);
-            add(lanes[1], child + 1);
-            add(lanes[2], child + 2);
-            add(lanes[3], child + 3);
+            for (int lane = 0; lane < 4; ++lane)
+            {
+                lanes[lane] = (lanes[lane] ^ Word(points[point + lane])) * kFnvPrime;
+            }
         }
-        for (; child < children; ++child)
+        for (; point < count; ++point)
         {
-            add(lanes[0], child);
+            lanes[0] = (lanes[0] ^ Word(points[point])) * kFnvPrime;
         }
+        Add(static_cast<std::uint64_t>(count));
         for (const std::uint64_t lane : lanes)
         {
             Add(lane);
+        }
+    }
+    /// A shape's own geometry, in its body's frame: what the cache is built from.
+    void Add(const b2Shape& shape)
+    {
+        Add((static_cast<std::uint64_t>(shape.GetType()) << 32u) |
+            std::bit_cast<std::uint32_t>(shape.m_radius));
+        switch (shape.GetType())
+        {
+        case b2Shape::e_circle:
+            Add(static_cast<const b2CircleShape&>(shape).m_p);
+            break;
+        case b2Shape::e_edge:
+        {
+            const auto& edge = static_cast<const b2EdgeShape&>(shape);
+            const b2Vec2 points[4] = {edge.m_vertex0, edge.m_vertex1, edge.m_vertex2, edge.m_vertex3};
+            Add(points, 4);
+            Add(static_cast<std::uint64_t>(edge.m_oneSided));
+            break;
+        }
+        case b2Shape::e_polygon:
+        {
+            const auto& polygon = static_cast<const b2PolygonShape&>(shape);
+            Add(polygon.m_vertices, polygon.m_count);
+            break;
+        }
+        case b2Shape::e_chain:
+        {
+            const auto& chain = static_cast<const b2ChainShape&>(shape);
+            Add(chain.m_vertices, chain.m_count);
+            Add(chain.m_prevVertex);
+            Add(chain.m_nextVertex);
+            break;
+        }
+        default:
+            break;
         }
     }
     /// Never 0, so that 0 can mean "invalid".
@@ -101,9 +132,7 @@ void AddStaticBody(Signature& signature, const b2Body& body)
         signature.Add(fixture->GetFriction());
         signature.Add(fixture->GetRestitution());
         signature.Add(fixture->GetRestitutionThreshold());
-        const int children = fixture->GetShape()->GetChildCount();
-        signature.Add(static_cast<std::uint64_t>(children));
-        signature.AddChildBoxes(*fixture, children);
+        signature.Add(*fixture->GetShape());
     }
 }
 

@@ -614,7 +614,7 @@ TEST(WorldGeometry, SweepsFindWhatSweepingEveryShapeFinds)
 }
 
 // Box2D reuses a destroyed fixture's memory for the next one, so a chain rebuilt with one vertex moved
-// can come back at the same addresses: only the children's boxes tell it apart. Each of them counts.
+// can come back at the same addresses: only its vertices tell it apart. Each of them counts.
 TEST(WorldGeometry, StaticCacheSeesAChangeInAnyChildOfAChain)
 {
     b2World world(b2Vec2(0.0f, -10.0f));
@@ -649,6 +649,68 @@ TEST(WorldGeometry, StaticCacheSeesAChangeInAnyChildOfAChain)
         geometry.Scan(world, nullptr, 1.0f / 60.0f);
         EXPECT_EQ(geometry.StaticBuilds(), builds) << "nothing changed since";
     }
+}
+
+// A static shape replaced by another with the same bounding box (a mirrored triangle, an edge or chain
+// reversed, a ghost vertex moved), or edited in place, at the same addresses: the shape's own geometry
+// tells it apart, not its box.
+TEST(WorldGeometry, StaticCacheSeesAReplacedShapeWithTheSameBox)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    b2BodyDef def;
+    b2Body* ground = world.CreateBody(&def);
+    WorldGeometry geometry;
+    std::uint64_t builds = 0;
+    auto replace = [&](const b2Shape& shape, const char* what)
+    {
+        if (ground->GetFixtureList() != nullptr)
+        {
+            ground->DestroyFixture(ground->GetFixtureList());
+        }
+        const b2Fixture* fixture = ground->CreateFixture(&shape, 0.0f);
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+        EXPECT_EQ(geometry.StaticBuilds(), builds + 1) << what;
+        builds = geometry.StaticBuilds();
+        geometry.Scan(world, nullptr, 1.0f / 60.0f);
+        EXPECT_EQ(geometry.StaticBuilds(), builds) << what << ": nothing changed since";
+        return fixture;
+    };
+    b2PolygonShape triangle;
+    const b2Vec2 rising[3] = {b2Vec2(0.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(0.0f, 4.0f)};
+    triangle.Set(rising, 3);
+    replace(triangle, "a triangle");
+    const b2Vec2 mirrored[3] = {b2Vec2(0.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(4.0f, 4.0f)};
+    triangle.Set(mirrored, 3);
+    const b2Fixture* fixture = replace(triangle, "the triangle mirrored, same box");
+
+    // Edited in place (Box2D's broad phase does not see it either).
+    auto* inPlace = static_cast<b2PolygonShape*>(const_cast<b2Fixture*>(fixture)->GetShape());
+    inPlace->m_vertices[2] = b2Vec2(3.0f, 4.0f);
+    geometry.Scan(world, nullptr, 1.0f / 60.0f);
+    EXPECT_EQ(geometry.StaticBuilds(), builds + 1) << "a vertex moved in place";
+    builds = geometry.StaticBuilds();
+
+    b2EdgeShape edge;
+    edge.SetOneSided(b2Vec2(-1.0f, 0.0f), b2Vec2(0.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(5.0f, 0.0f));
+    replace(edge, "a one-sided edge");
+    edge.SetOneSided(b2Vec2(5.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(0.0f, 0.0f), b2Vec2(-1.0f, 0.0f));
+    replace(edge, "the edge reversed");
+    edge.SetOneSided(b2Vec2(5.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(0.0f, 0.0f), b2Vec2(-1.0f, 1.0f));
+    replace(edge, "a ghost vertex moved");
+    edge.SetTwoSided(b2Vec2(4.0f, 0.0f), b2Vec2(0.0f, 0.0f));
+    replace(edge, "made two-sided");
+
+    const b2Vec2 points[3] = {b2Vec2(0.0f, 0.0f), b2Vec2(2.0f, 0.0f), b2Vec2(4.0f, 0.0f)};
+    const b2Vec2 reversed[3] = {points[2], points[1], points[0]};
+    b2ChainShape forward;
+    forward.CreateChain(points, 3, b2Vec2(-1.0f, 0.0f), b2Vec2(5.0f, 0.0f));
+    replace(forward, "a chain");
+    b2ChainShape backward;
+    backward.CreateChain(reversed, 3, b2Vec2(5.0f, 0.0f), b2Vec2(-1.0f, 0.0f));
+    replace(backward, "the chain reversed");
+    b2ChainShape ghost;
+    ghost.CreateChain(reversed, 3, b2Vec2(5.0f, 1.0f), b2Vec2(-1.0f, 0.0f));
+    replace(ghost, "the chain's first ghost vertex moved");
 }
 
 } // namespace cfx::particles
