@@ -218,6 +218,17 @@ void ContactTracker::Prune()
     }
 }
 
+void ContactTracker::ShiftOrigin(b2Vec2 newOrigin)
+{
+    for (std::vector<TrackedContact>& contacts : m_byRule)
+    {
+        for (TrackedContact& tracked : contacts)
+        {
+            tracked.approachPoint -= newOrigin;
+        }
+    }
+}
+
 void ContactTracker::EndStep()
 {
     for (std::vector<TrackedContact>& list : m_byRule)

@@ -250,6 +250,13 @@ void Effects::Step(float dt)
     NotifyListener();
 }
 
+void Effects::ShiftOrigin(b2Vec2 newOrigin)
+{
+    m_particles.ShiftOrigin(newOrigin); // checks newOrigin first
+    m_internals->tracker.ShiftOrigin(newOrigin);
+    m_internals->events.ShiftOrigin(newOrigin);
+}
+
 void Effects::EndScrapes()
 {
     m_internals->events.EndAll(ScrapeEnd::stopped);

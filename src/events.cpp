@@ -29,6 +29,14 @@ void EventTracker::ParticleHits(std::span<const ParticleHitGroup> groups)
     }
 }
 
+void EventTracker::ShiftOrigin(b2Vec2 newOrigin)
+{
+    for (ScrapeState& scrape : m_scrapes)
+    {
+        scrape.point -= newOrigin;
+    }
+}
+
 void EventTracker::EndAll(ScrapeEnd reason)
 {
     m_events.clear(); // holds a step's scrape ends and more, so never grows here

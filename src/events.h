@@ -108,6 +108,10 @@ public:
     /// order (stamped with the last step). Allocation-free.
     void EndAll(ScrapeEnd reason);
 
+    /// The world's origin moved to `newOrigin` (b2World::ShiftOrigin): the points the open scrapes last
+    /// reported move by -newOrigin. The events already made stay as they were reported.
+    void ShiftOrigin(b2Vec2 newOrigin);
+
     /// The events of this step so far, in order. Valid until the next BeginStep.
     std::span<const EffectEvent> Events() const { return m_events; }
     /// The id of the scrape going on in `slot`, 0 when none.

@@ -633,6 +633,34 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
     }
 }
 
+void ParticleSystem::ShiftOrigin(b2Vec2 newOrigin)
+{
+    if (!newOrigin.IsValid())
+    {
+        std::ostringstream found;
+        found << "(" << newOrigin.x << ", " << newOrigin.y << ")";
+        throw InputError("<api>", "newOrigin", "expected a finite vector, found " + found.str());
+    }
+    Impl& impl = *m_impl;
+    // Every slot, live or not: a rare call, and no ring arithmetic to get wrong.
+    for (std::uint32_t slot = 0; slot < m_capacity; ++slot)
+    {
+        impl.positionX[slot] -= newOrigin.x;
+        impl.positionY[slot] -= newOrigin.y;
+    }
+    for (std::size_t slot = 0; slot < impl.startX.size(); ++slot)
+    {
+        impl.startX[slot] -= newOrigin.x;
+        impl.startY[slot] -= newOrigin.y;
+    }
+    for (ParticleHitGroup& group : impl.hitGroups)
+    {
+        group.centre -= newOrigin;
+    }
+    // The cache, the clearances and the resting marks are in world coordinates: all made again.
+    impl.geometry.Invalidate();
+}
+
 void ParticleSystem::InvalidateStaticGeometry()
 {
     m_impl->geometry.Invalidate();
@@ -661,7 +689,7 @@ std::span<const ParticleHitGroup> ParticleSystem::Hits() const
 
 bool ParticleSystem::IsParticleBody(const b2Body* body) const
 {
-    return m_impl->bodySet.Find(body) != nullptr;
+    return body != nullptr && m_impl->bodySet.Find(body) != nullptr;
 }
 
 std::uint64_t ParticleSystem::StaticGeometryBuilds() const

@@ -107,6 +107,18 @@ public:
     /// else changes: a contact still scraping at the next Step begins a new scrape, with a new id.
     void EndScrapes();
 
+    /// Call right after b2World::ShiftOrigin(newOrigin), with the same vector (m): the particles (pool
+    /// ones; body-backed ones move with their bodies) and the points the scrapes going on last reported
+    /// move by -newOrigin with the world. Events already delivered keep their points. Throws InputError
+    /// (file "<api>", field "newOrigin") when it is not finite; nothing changes then.
+    void ShiftOrigin(b2Vec2 newOrigin);
+
+    /// Whether `body` is the Box2D body of one of this object's body-backed particles (ParticleBackend::
+    /// body, the tutorial preset). Such bodies are in the world like any other: the application's contact
+    /// and destruction listeners hear of their contacts and fixtures, and its world queries meet them;
+    /// this tells them apart. O(1).
+    bool IsParticleBody(const b2Body* body) const { return m_particles.IsParticleBody(body); }
+
     const EffectsStats& Stats() const { return m_stats; }
     /// The scrape and impact events of the last Step (or EndScrapes), in order (events.h). Valid until
     /// the next Step or EndScrapes.
