@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <box2d/b2_body.h>
+#include <box2d/b2_circle_shape.h>
 #include <box2d/b2_contact.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
@@ -30,18 +31,36 @@ bool SurfaceIsA(const b2Fixture* fixtureA, const b2Fixture* fixtureB)
     return bodyA->GetMass() >= bodyB->GetMass();
 }
 
-// How far along the surface a start is looked for, each way (m): a metre, or half the larger side of the
-// other fixture's box when that is more. The gap between a convex body and the surface it presses on opens
-// slowly (a 7.7 m wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact): a large body
-// finds the free surface at its rim, where its dirt is thrown, instead of rejecting every particle.
+// The velocity of the other fixture's footprint on the surface (m/s, world): how its contact moves. A
+// circle rolls, so its footprint stays under its centre whatever its spin; anything else drags its
+// footprint along with the material at the contact point (`velocityAtPoint`).
+b2Vec2 FootprintVelocity(const b2Fixture& other, b2Vec2 velocityAtPoint)
+{
+    const b2Shape& shape = *other.GetShape();
+    if (shape.GetType() != b2Shape::e_circle)
+    {
+        return velocityAtPoint;
+    }
+    const b2Body& body = *other.GetBody();
+    const b2Vec2 centre = b2Mul(body.GetTransform(), static_cast<const b2CircleShape&>(shape).m_p);
+    return body.GetLinearVelocityFromWorldPoint(centre);
+}
+
+// How far along the surface a start is looked for, each way (m): a metre, or the larger side of the other
+// fixture's box and a tenth of a metre when that is more. From one end of a body's footprint the side the
+// particles leave to may be the body's whole length away (a block sliding on its front corner leaves its
+// sparks behind its rear one), and the gap between a large convex body and the surface opens slowly (a 7.7 m
+// wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact): its dirt starts at its rim instead of
+// being rejected.
 float SearchDistance(const b2Fixture& other, int otherChild)
 {
     constexpr float kLeast = 1.0f;
+    constexpr float kBeyond = 0.1f;
     b2AABB box;
     other.GetShape()->ComputeAABB(&box, other.GetBody()->GetTransform(), otherChild);
     const b2Vec2 extent = box.upperBound - box.lowerBound;
-    const float half = 0.5f * std::max(extent.x, extent.y);
-    return std::isfinite(half) ? std::max(kLeast, half) : kLeast;
+    const float across = std::max(extent.x, extent.y) + kBeyond;
+    return std::isfinite(across) ? std::max(kLeast, across) : kLeast;
 }
 
 // A particle count from a float that may be absurd (a huge rate), infinite or NaN: clamped to [0, limit]
@@ -461,12 +480,24 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     b2Vec2 slip = surfaceIsA ? sample.velocityB - sample.velocityA : sample.velocityA - sample.velocityB;
     slip -= b2Dot(slip, surfaceNormal) * surfaceNormal;
 
+    // The rule's materials name A and B; the contact's fixture order is Box2D's.
+    const b2Vec2 ruleVelocityA = tracked.swapped ? sample.velocityB : sample.velocityA;
+    const b2Vec2 ruleVelocityB = tracked.swapped ? sample.velocityA : sample.velocityB;
+    const b2Vec2 carried =
+        type.inheritA * ruleVelocityA + type.inheritB * ruleVelocityB + type.slipFactor * slip;
+    // Where the particles go, seen from the other body's footprint: a sliding block's sparks fall behind
+    // it, a spinning wheel's dirt leaves where its rim rises (not where it comes down, which would crush
+    // it). Nothing carried along the surface: the side the other body's surface moves to.
+    const b2Fixture& other = surfaceIsA ? *fixtureB : *fixtureA;
+    b2Vec2 leaving = carried - FootprintVelocity(other, surfaceIsA ? sample.velocityB : sample.velocityA);
+    leaving -= b2Dot(leaving, surfaceNormal) * surfaceNormal;
+
     SpawnQuery query;
     query.surface = surfaceIsA ? fixtureA : fixtureB;
     query.surfaceChild = surfaceIsA ? contact->GetChildIndexA() : contact->GetChildIndexB();
     query.point = sample.point;
     query.normal = surfaceNormal;
-    query.slip = slip;
+    query.leaving = leaving.LengthSquared() > 0.0f ? leaving : slip;
     query.radius = type.radius;
     SpawnPoint start;
     if (rule.placement == SpawnPlacement::tutorialDrop) // looks 1 m each way, as documented
@@ -492,11 +523,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         context.stats.spawnedInsideSolid += static_cast<std::uint64_t>(count);
     }
 
-    // The rule's materials name A and B; the contact's fixture order is Box2D's.
-    const b2Vec2 ruleVelocityA = tracked.swapped ? sample.velocityB : sample.velocityA;
-    const b2Vec2 ruleVelocityB = tracked.swapped ? sample.velocityA : sample.velocityB;
-    const b2Vec2 baseVelocity = type.inheritA * ruleVelocityA + type.inheritB * ruleVelocityB +
-                                type.slipFactor * slip + type.normalSpeed * start.normal;
+    const b2Vec2 baseVelocity = carried + type.normalSpeed * start.normal;
     const float life = std::clamp(type.lifeBase + type.lifeFromIntensity * intensity, 0.0f, 1.0f);
     int spawned = 0;
     for (int n = 0; n < count; ++n)

@@ -437,7 +437,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.velocityY[slot] = spawn.velocity.y;
     impl.life[slot] = std::min(spawn.life, 1.0f);
     impl.type[slot] = spawn.type.index;
-    impl.clearance[slot] = particles::kUnknownClearance;
+    impl.clearance[slot] = particles::kSpawnedClearance;
     if (impl.anyBodyBacked)
     {
         impl.body[slot] =

@@ -211,27 +211,26 @@ bool ProjectOntoSurface(const SpawnQuery& query, b2Vec2 point, float reach, b2Ve
     return true;
 }
 
-// Tries offsets along a line from the contact, `firstSide` first: 0, then 1 .. 8 steps each way, then
-// growing by half each time up to `searchDistance`. Returns the first start `attempt` accepts.
+// Tries offsets along a line from the contact: 0, then on `firstSide` 1 .. 8 steps, then growing by half
+// each time, the last one `searchDistance` itself; then the same on the other side. Returns the first start
+// `attempt` accepts. The whole first side comes first: a start just across the contact (ahead of a sliding
+// block's front corner) would have its particles run over.
 template <class Attempt> SpawnPoint Walk(float firstSide, float step, float searchDistance, Attempt&& attempt)
 {
     SpawnPoint found;
-    float offset = 0.0f;
-    for (int k = 0; offset <= searchDistance; ++k)
+    for (float side : {firstSide, -firstSide})
     {
-        for (float side : {firstSide, -firstSide})
+        float offset = side == firstSide ? 0.0f : step;
+        for (int k = side == firstSide ? 0 : 1; offset <= searchDistance; ++k)
         {
-            if (k == 0 && side != firstSide)
-            {
-                continue;
-            }
             if (attempt(side * offset, found))
             {
                 found.outside = true;
                 return found;
             }
+            const float next = k < 8 ? offset + step : offset * 1.5f;
+            offset = offset < searchDistance && next > searchDistance ? searchDistance : next;
         }
-        offset = k < 8 ? offset + step : offset * 1.5f;
     }
     found.outside = false;
     return found;
@@ -295,8 +294,7 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
 SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
 {
     b2Vec2 tangent(-query.normal.y, query.normal.x);
-    // Trailing side first: particles are left behind the moving body, as a scrape leaves them.
-    float firstSide = b2Dot(query.slip, tangent) > 0.0f ? -1.0f : 1.0f;
+    const float firstSide = b2Dot(query.leaving, tangent) < 0.0f ? -1.0f : 1.0f;
     // Ray casts find the core shape; polygons and edges carry a skin of b2_polygonRadius beyond it.
     const b2Shape* shape = query.surface->GetShape();
     const float skin = shape->GetType() == b2Shape::e_circle ? 0.0f : shape->m_radius;
@@ -330,8 +328,8 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
 
 SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
 {
-    // Along x, trailing side first, as FindSpawnPoint walks along the surface.
-    const float firstSide = query.slip.x > 0.0f ? -1.0f : 1.0f;
+    // Along x, the side the particles leave to first, as FindSpawnPoint walks along the surface.
+    const float firstSide = query.leaving.x < 0.0f ? -1.0f : 1.0f;
     const float step = std::max(query.radius + b2_polygonRadius + b2_linearSlop, 0.01f);
     SpawnPoint found =
         Walk(firstSide, step, query.searchDistance,

@@ -6,8 +6,9 @@
 // surfaces: it projects the contact point onto the surface fixture's boundary with a ray cast from the
 // other body's side (the outside, so one-sided edges and chains are hit from their solid-facing side),
 // lifts it by the particle's radius plus the shape's skin (b2_polygonRadius for polygons and edges), and
-// walks along the surface, trailing side first, until the particle's disc is inside no solid fixture of the
-// world. Circles, polygons, edges and chains all answer ray casts, so one method serves every shape.
+// walks along the surface, first to the side the particles leave to (SpawnQuery::leaving), until the
+// particle's disc is inside no solid fixture of the world. Circles, polygons, edges and chains all answer ray
+// casts, so one method serves every shape.
 //
 // Inside means: the disc overlaps a solid (non-sensor) fixture, skins included, or its centre is behind
 // the nearest one-sided edge or chain (they collide on their front only, so what is behind them is in
@@ -38,9 +39,12 @@ struct SpawnQuery
     int surfaceChild = 0;               ///< child index of `surface` (chains)
     b2Vec2 point{0.0f, 0.0f};           ///< contact point, world, m
     b2Vec2 normal{0.0f, 1.0f};          ///< unit normal pointing out of `surface` toward the other fixture
-    b2Vec2 slip{0.0f, 0.0f};            ///< velocity of the other body relative to the surface, m/s
-    float radius = 0.01f;               ///< m, > 0: the particle's radius; its whole disc must be clear
-    float searchDistance = 1.0f;        ///< m: how far along the surface to look, each way
+    /// m/s: where the particles go, relative to the other body's footprint on the surface (see
+    /// Emitter): the start is searched on the side this points to first, so that they leave the contact
+    /// instead of flying into the closing gap beside it.
+    b2Vec2 leaving{0.0f, 0.0f};
+    float radius = 0.01f;        ///< m, > 0: the particle's radius; its whole disc must be clear
+    float searchDistance = 1.0f; ///< m: how far along the surface to look, each way
 };
 
 struct SpawnPoint
@@ -60,8 +64,8 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
 SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point);
 
 /// The tutorial's placement, never inside: the drop at query.point's x when the particle's disc there is
-/// clear (DiscIsClear), else the drop at x moved along the ground, trailing side first (against
-/// query.slip.x), by growing steps up to query.searchDistance each way. The tutorial's own drop lands
+/// clear (DiscIsClear), else the drop at x moved along the ground, the side query.leaving.x points to
+/// first, by growing steps up to query.searchDistance each way. The tutorial's own drop lands
 /// inside the wheel or the car's body that stands on the contact (its particles do not collide with
 /// them); this one lands beside it. `outside` false when no clear drop was found.
 SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);

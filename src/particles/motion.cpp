@@ -188,7 +188,8 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     if (geometry.HasMoving())
     {
         SweepResult hit;
-        if (geometry.SweepMoving(start, position, type.side, hit))
+        const bool spawned = mark <= kSpawnedClearance && mark != kResting;
+        if (geometry.SweepMoving(start, position, type.side, spawned, hit))
         {
             // Where the body would put it; failing that (a wedge), where it met the body.
             const b2Vec2 free = position;

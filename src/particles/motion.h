@@ -22,6 +22,11 @@ namespace cfx::particles
 /// sweeps it, even if it does not move (it may have been spawned overlapping a shape).
 inline constexpr float kUnknownClearance = -std::numeric_limits<float>::min();
 
+/// The clearance of a particle spawned since the last step (kUnknownClearance otherwise): it was placed
+/// where the moving bodies stand at the end of the world step, so its first step does not sweep their
+/// motion of that step over it. Still below zero after a step's flight is taken off it.
+inline constexpr float kSpawnedClearance = -std::numeric_limits<float>::max();
+
 /// The ring of particle arrays. Slot of logical index i: (head + i) mod capacity.
 struct PoolArrays
 {
@@ -33,7 +38,8 @@ struct PoolArrays
     std::uint16_t* type;
     /// How far (m) the particle's centre can move before its disc can touch a static shape (a lower
     /// bound; +infinity when it never touches one). Negative: the particle is swept in the next step;
-    /// kUnknownClearance when nothing is known (it even lists a particle that does not move), -infinity
+    /// kUnknownClearance when nothing is known (it even lists a particle that does not move),
+    /// kSpawnedClearance (or a step's flight below it) when just spawned, -infinity
     /// when resting: (position, zero velocity) is a fixed point of the static sweep.
     float* clearance;
     b2Body** body; ///< null when no type is body-backed

@@ -66,9 +66,10 @@ b2Transform WorldGeometry::MovingBody::At(float f) const
 // Seen from the body's centre, which moves in a straight line, the disc's path is a segment, and the shape
 // stays within `reach` of the centre in every pose: the disc can meet it only if the segment passes within
 // reach + r of the centre. A few flops, where the sweep costs two transforms per piece and a shape test.
-bool WorldGeometry::MayMeet(const MovingBody& body, float reach, b2Vec2 start, b2Vec2 end, float r)
+bool WorldGeometry::MayMeet(const MovingBody& body, b2Vec2 centreAtStart, float reach, b2Vec2 start,
+                            b2Vec2 end, float r)
 {
-    const b2Vec2 from = start - body.centerBefore;
+    const b2Vec2 from = start - centreAtStart;
     const b2Vec2 along = (end - body.center) - from;
     const float lengthSq = b2Dot(along, along);
     const float u = lengthSq > 0.0f ? std::clamp(-b2Dot(from, along) / lengthSq, 0.0f, 1.0f) : 0.0f;
@@ -79,7 +80,8 @@ bool WorldGeometry::MayMeet(const MovingBody& body, float reach, b2Vec2 start, b
     return b2Dot(nearest, nearest) <= within * within;
 }
 
-bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const
+bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
+                                SweepResult& result) const
 {
     const float r = side.radius;
     const b2AABB query = PathBox(start, end, r);
@@ -98,21 +100,23 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                 return;
             }
             const MovingBody& body = m_movingBodies[moving.body];
-            if (!MayMeet(body, moving.reach, start, end, r))
+            if (!MayMeet(body, placedAfter ? body.center : body.centerBefore, moving.reach, start, end, r))
             {
                 return;
             }
 
             // The disc's path in the body's frame, piece by piece: from where it was in the frame at the
-            // piece's start to where it is in the frame at the piece's end.
-            const float perPiece = 1.0f / static_cast<float>(body.pieces);
-            b2Transform frame = body.before;
+            // piece's start to where it is in the frame at the piece's end (one piece, in the end pose,
+            // for a disc placed after the body moved).
+            const int pieces = placedAfter ? 1 : body.pieces;
+            const float perPiece = 1.0f / static_cast<float>(pieces);
+            b2Transform frame = placedAfter ? body.after : body.before;
             b2Vec2 from = b2MulT(frame, start);
             Touch local;
             float t = 2.0f;
-            for (int piece = 0; piece < body.pieces; ++piece)
+            for (int piece = 0; piece < pieces; ++piece)
             {
-                const float f = piece + 1 == body.pieces ? 1.0f : static_cast<float>(piece + 1) * perPiece;
+                const float f = piece + 1 == pieces ? 1.0f : static_cast<float>(piece + 1) * perPiece;
                 frame = body.At(f);
                 const b2Vec2 to = b2MulT(frame, start + f * (end - start));
                 if (SweepShape(SweepInput{from, to - from, r}, *moving.shape, moving.child, local))
@@ -178,7 +182,7 @@ bool WorldGeometry::MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side,
             const MovingBody& body = m_movingBodies[moving.body];
             // A disc resting at `point` for the whole step that never comes within reach of the body's
             // centre overlaps nothing of it at the end either.
-            if (!MayMeet(body, moving.reach, point, point, r))
+            if (!MayMeet(body, body.centerBefore, moving.reach, point, point, r))
             {
                 return;
             }

@@ -148,7 +148,10 @@ public:
     /// the rest of its motion relative to the body, less the part into the surface (it slides along it),
     /// and ends outside the body where the body is at the end of the step: pushed or carried, never
     /// left inside. `result`: that end position (world), the surface's normal and velocity there.
-    bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, SweepResult& result) const;
+    /// `placedAfter`: the disc was put at `start` after the bodies moved (spawned since the last step, where
+    /// they stand at the end of it): for it the bodies stand still at their end poses.
+    bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
+                     SweepResult& result) const;
 
     /// The most a moving body turns (rad) within one piece of a moving sweep.
     static constexpr float kMaxTurn = 0.1f;
@@ -229,8 +232,10 @@ private:
     };
 
     /// Whether a disc of radius `r` moving in a straight line from `start` to `end` during the step can
-    /// meet a shape of `body` that reaches `reach` from its centre (false only when it cannot).
-    static bool MayMeet(const MovingBody& body, float reach, b2Vec2 start, b2Vec2 end, float r);
+    /// meet a shape of `body` that reaches `reach` from its centre, which moves in a straight line from
+    /// `centreAtStart` to body.center (false only when it cannot).
+    static bool MayMeet(const MovingBody& body, b2Vec2 centreAtStart, float reach, b2Vec2 start, b2Vec2 end,
+                        float r);
     /// The box the child covers during the step (see the file comment), grown by a little for rounding.
     static b2AABB SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach);
     void BuildStatic(b2World& world);

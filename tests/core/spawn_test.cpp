@@ -281,12 +281,12 @@ TEST(Spawn, TutorialDropStepsAsideFromWhatStandsOnTheContact)
     EXPECT_FALSE(DiscIsClear(*scene.world, tutorial.position, 0.01f, nullptr));
     SpawnQuery query;
     query.point = b2Vec2(0.0f, 0.0f);
-    query.slip = b2Vec2(-5.0f, 0.0f); // the tread moves back over the ground: trailing side is +x
+    query.leaving = b2Vec2(5.0f, 0.0f); // the particles go toward +x: that side first
     query.radius = 0.01f;
     const SpawnPoint drop = FindTutorialDropPoint(*scene.world, query, nullptr);
     ASSERT_TRUE(drop.outside);
     EXPECT_NEAR(drop.position.y, 0.05f, 1e-4f) << "still the tutorial's height over the ground";
-    EXPECT_GT(drop.position.x, 0.2f) << "beside the wheel, trailing side first";
+    EXPECT_GT(drop.position.x, 0.2f) << "beside the wheel, on the side the particles leave to";
     EXPECT_LT(drop.position.x, 0.5f);
     EXPECT_TRUE(DiscIsClear(*scene.world, drop.position, 0.01f, nullptr));
 }

@@ -1,0 +1,80 @@
+// Which side of a contact particles start on: the side they leave to, seen from the other body's
+// footprint. A user's trial found a wheel spinning in place on dirt with 95 % of its dirt crushed at 60
+// and 120 Hz (none at 30 and 240): it started where the rim comes down into the contact.
+#include "test_world.h"
+
+#include <gtest/gtest.h>
+
+namespace cfx::test
+{
+
+TEST(SpawnSide, AWheelSpinningInPlaceThrowsFromWhereItsRimRisesAtEveryStepRate)
+{
+    struct Case
+    {
+        const char* wheel;
+        const char* ground;
+        const char* particle;
+    };
+    for (const Case& pair : {Case{"rubber", "dirt", "dirt"}, Case{"steel", "concrete", "sparks"}})
+    {
+        for (const float hz : {30.0f, 60.0f, 120.0f, 240.0f})
+        {
+            SCOPED_TRACE(std::string(pair.wheel) + " on " + pair.ground + " at " + std::to_string(hz) +
+                         " Hz");
+            TestWorld scene;
+            scene.particles.checkParticles = true;
+            b2Body* ground = scene.CreateGround(0.3f);
+            b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
+            Effects& fx = scene.Attach();
+            fx.SetMaterial(ground, fx.FindMaterial(pair.ground));
+            fx.SetMaterial(wheel, fx.FindMaterial(pair.wheel));
+            int leftOfTheWheel = 0, rightOfTheWheel = 0;
+            for (int step = 0; step < static_cast<int>(2.0f * hz); ++step)
+            {
+                wheel->SetAngularVelocity(-40.0f); // clockwise: the rim rises on the -x side
+                wheel->SetLinearVelocity(b2Vec2(0.0f, wheel->GetLinearVelocity().y));
+                scene.Step(1.0f / hz);
+                const ParticleView view = fx.Particles();
+                for (std::uint32_t i = 0; i < view.count; ++i)
+                {
+                    (view.positionX[view.Slot(i)] < 0.0f ? leftOfTheWheel : rightOfTheWheel) += 1;
+                }
+            }
+            EXPECT_GT(scene.Spawned(pair.particle), 500u);
+            EXPECT_EQ(fx.Stats().crushed, 0u);
+            EXPECT_GT(leftOfTheWheel, 20 * rightOfTheWheel) << "thrown back, away from the wheel";
+            EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+            EXPECT_EQ(fx.Stats().particleStepsInside, 0u);
+        }
+    }
+}
+
+TEST(SpawnSide, ASlidingBlockLeavesItsSparksBehindIt)
+{
+    TestWorld scene;
+    scene.particles.checkParticles = true;
+    b2Body* ground = scene.CreateGround(0.5f);
+    b2Body* block = scene.CreateBox(b2Vec2(-10.0f, 0.25f), 0.5f, 0.25f, 0.3f);
+    block->SetLinearVelocity(b2Vec2(14.0f, 0.0f));
+    Effects& fx = scene.Attach();
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(block, fx.FindMaterial("steel"));
+    std::uint32_t seen = 0;
+    for (int step = 0; step < 20; ++step)
+    {
+        scene.Step();
+        // Sparks fly at half the slip: none has caught up with the block's rear face yet.
+        const float rear = block->GetPosition().x - 0.5f;
+        const ParticleView view = fx.Particles();
+        for (std::uint32_t i = 0; i < view.count; ++i)
+        {
+            EXPECT_LT(view.positionX[view.Slot(i)], rear) << "step " << step << ", particle " << i;
+        }
+        seen += view.count;
+    }
+    EXPECT_GT(seen, 200u);
+    EXPECT_EQ(fx.Stats().crushed, 0u);
+}
+
+} // namespace cfx::test
