@@ -344,6 +344,9 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     impl.threads = std::clamp(options.threads == 0 ? hardware : options.threads, 1u, kMaxThreads);
     impl.minPerThread = std::max<std::uint32_t>(1, options.minParticlesPerThread);
+    // The helpers the fullest pool can use, now: starting a thread allocates, and a step never does.
+    impl.workers.Start(
+        static_cast<unsigned>(std::clamp<std::uint64_t>(m_capacity / impl.minPerThread, 1, impl.threads)));
     impl.positionX.resize(m_capacity);
     impl.positionY.resize(m_capacity);
     impl.velocityX.resize(m_capacity);

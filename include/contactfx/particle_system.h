@@ -98,7 +98,9 @@ struct ParticleHitGroup
 /// How a particle system uses the machine.
 struct ParticleSystemOptions
 {
-    /// Threads for one step, the caller's included; 0: one per hardware thread (at most 8).
+    /// Threads for one step, the caller's included; 0: one per hardware thread (at most 8). The helper
+    /// threads a full pool can use (capacity / minParticlesPerThread, at most threads - 1) are started
+    /// with the system, so that no step ever starts one.
     unsigned threads = 0;
     /// A step in which particles collide is split only when every thread gets at least this many
     /// particles (below that, waking a thread costs more than it saves). A step in which none collides

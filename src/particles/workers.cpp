@@ -27,6 +27,15 @@ Workers::~Workers()
     }
 }
 
+void Workers::Start(unsigned parts)
+{
+    while (m_threads.size() + 1 < parts)
+    {
+        const auto part = static_cast<unsigned>(m_threads.size()) + 1;
+        m_threads.emplace_back([this, part] { Loop(part); });
+    }
+}
+
 void Workers::Run(unsigned parts, Task task, void* context)
 {
     if (parts <= 1)
@@ -34,11 +43,7 @@ void Workers::Run(unsigned parts, Task task, void* context)
         task(context, 0);
         return;
     }
-    while (m_threads.size() + 1 < parts)
-    {
-        const auto part = static_cast<unsigned>(m_threads.size()) + 1;
-        m_threads.emplace_back([this, part] { Loop(part); });
-    }
+    Start(parts);
     {
         std::lock_guard<std::mutex> lock(m_mutex);
         m_task = task;

@@ -2,7 +2,8 @@
 //
 // The particle step splits its particles into contiguous ranges, one per thread. Starting a thread per
 // step would cost more than the work at the sizes where splitting pays, so the helper threads are
-// started once, on first use, and sleep on a condition variable between jobs. Run() gives part 0 to the
+// started once (by Start, when their owner is created: never in a step) and sleep on a condition variable
+// between jobs. Run() gives part 0 to the
 // calling thread and parts 1 .. n-1 to the helpers, and returns when all are done. The caller waits for
 // the helpers awake (yielding) for up to 200 microseconds before it sleeps too: their parts are as long
 // as its own, and a sleeping thread takes tens of microseconds to wake on a virtual machine (measured:
@@ -32,8 +33,10 @@ public:
     Workers(const Workers&) = delete;
     Workers& operator=(const Workers&) = delete;
 
-    /// Runs task(context, part) for part in [0, parts); parts - 1 helper threads are started on first
-    /// need and kept.
+    /// Starts the helper threads jobs of up to `parts` parts need (parts - 1), unless they run already.
+    void Start(unsigned parts);
+    /// Runs task(context, part) for part in [0, parts); the helpers a job of more parts than Start made
+    /// room for needs are started first.
     void Run(unsigned parts, Task task, void* context);
 
 private:

@@ -128,6 +128,39 @@ TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
     EXPECT_GT(particles.Count(), 0u);
 }
 
+// A game that first has enough particles to split a step long after its warm-up: the helper thread was
+// started with the system, not in that step (a user's trial counted 2 allocations there).
+TEST(ParticleAllocation, NoneInTheFirstStepSplitAcrossThreads)
+{
+    TestWorld scene;
+    scene.CreateGround();
+    std::vector<ParticleTypeDef> types(1);
+    types[0].lifetime = 10.0f;
+    ParticleSystemOptions options;
+    options.threads = 2;
+    options.minParticlesPerThread = 500;
+    ParticleSystem particles(*scene.world, types, ParticleBudget{4000, RecyclePolicy::oldest}, options);
+    auto spawn = [&](int count)
+    {
+        for (int k = 0; k < count; ++k)
+        {
+            particles.Spawn(ParticleSpawn{b2Vec2(-5.0f + 0.01f * static_cast<float>(k % 1000), 1.0f),
+                                          b2Vec2(0.0f, 0.0f), 1.0f, ParticleTypeId{0}});
+        }
+    };
+    spawn(100);
+    for (int i = 0; i < 60; ++i)
+    {
+        particles.Step(1.0f / 60.0f, scene.world->GetGravity());
+    }
+    ASSERT_EQ(particles.ThreadsUsed(), 1u);
+    spawn(2000);
+    const long before = Allocations();
+    particles.Step(1.0f / 60.0f, scene.world->GetGravity());
+    EXPECT_EQ(Allocations() - before, 0);
+    EXPECT_EQ(particles.ThreadsUsed(), 2u);
+}
+
 TEST(ParticleAllocation, TheCounterCounts)
 {
     const long before = Allocations();
