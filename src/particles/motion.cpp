@@ -100,6 +100,14 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
     return !geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius);
 }
 
+// Whether a disc at `position` overlaps a static shape by more than half its radius.
+bool StaticOverlapsDeeper(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 position)
+{
+    SweepResult inside;
+    return geometry.SweepStatic(SweepInput{position, b2Vec2(0.0f, 0.0f), side.radius}, side, inside) &&
+           inside.touch.t == 0.0f && inside.touch.depth > 0.5f * side.radius;
+}
+
 // What a particle's mark says of its motion against the static geometry this step.
 enum class StaticPart : std::uint8_t
 {
@@ -133,7 +141,8 @@ void KeepHarder(const SweepResult& hit, b2Vec2 velocity, float radius, Hardest& 
 // its mark says; `mark`: that mark, what is left of its clearance after this step's flight. Returns its
 // clearance after the step (see PoolArrays): kResting at a fixed point of the static sweep,
 // kUnknownClearance after a touch. `crushed`: set when a moving body squeezed it against other geometry
-// with no free place (see Push). `hardest`: its hardest touch of the step.
+// with no free place (see Push), or when the static sweeps leave it more than half its radius inside a
+// static shape (it started in two at once). `hardest`: its hardest touch of the step.
 float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, StaticPart part, float mark,
               b2Vec2& position, b2Vec2& velocity, bool& crushed, Hardest& hardest)
 {
@@ -156,6 +165,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     else if (geometry.HasStatic())
     {
         float remaining = dt;
+        bool startedDeep = false; // a sweep began deep inside a static shape
         for (int sweep = 0; sweep < kStaticSweeps; ++sweep)
         {
             const SweepInput in{position, remaining * velocity, type.side.radius};
@@ -171,6 +181,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 break;
             }
             touched = true;
+            startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
             KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =
@@ -179,6 +190,13 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
         }
         // Bit for bit, so that skipping the sweep of a resting particle gives exactly what it would have.
         fixedPoint = fromRest && SameBits(position, start) && SameBits(velocity, b2Vec2(0.0f, 0.0f));
+        // Pushed out of one static shape it may be in another (a slab created over it, a slit between
+        // two boxes): still deep inside after the sweeps, it has no free place and is crushed.
+        if (startedDeep && StaticOverlapsDeeper(geometry, type.side, position))
+        {
+            crushed = true;
+            return kUnknownClearance;
+        }
     }
     else
     {

@@ -250,6 +250,55 @@ TEST(ParticlePool, StaticCacheFollowsCreatedMovedAndDestroyedFixtures)
     EXPECT_LT(scene.Position(0).y, -2.0f);
 }
 
+// A static slab created over particles resting on the ground (a door closing on them), and a particle
+// spawned in a slit narrower than itself between two static boxes: pushed out of one shape they are in
+// the other, so they have no free place and are crushed. A user's trial found them left inside for good,
+// their velocity growing under gravity without bound.
+TEST(ParticlePool, ParticlesInsideTwoStaticShapesAtOnceAreCrushed)
+{
+    ParticleTypeDef grain = Ball(0.0f);
+    grain.radius = 0.03f;
+    ParticleSystemOptions options;
+    options.checkParticles = true;
+    Pool scene({grain}, {256, RecyclePolicy::oldest}, options);
+    b2Body* ground = scene.CreateGround();
+    for (int i = 0; i < 40; ++i)
+    {
+        scene.Add(b2Vec2(-2.0f + 0.1f * static_cast<float>(i), 0.03f));
+    }
+    for (int i = 0; i < 30; ++i)
+    {
+        scene.StepAll();
+    }
+    ASSERT_EQ(scene.system->Count(), 40u);
+    ASSERT_EQ(scene.system->Counters().stepsInside, 0u);
+
+    // The slab covers the first 30 particles, its bottom 1 cm above the ground.
+    b2PolygonShape slab;
+    slab.SetAsBox(1.5f, 0.1f, b2Vec2(-0.55f, 0.11f), 0.0f);
+    ground->CreateFixture(&slab, 0.0f);
+    // Two boxes 1 cm apart, and a particle of 6 cm between them.
+    b2PolygonShape left;
+    left.SetAsBox(0.5f, 0.5f, b2Vec2(4.0f, 0.5f), 0.0f);
+    ground->CreateFixture(&left, 0.0f);
+    b2PolygonShape right;
+    right.SetAsBox(0.5f, 0.5f, b2Vec2(5.01f, 0.5f), 0.0f);
+    ground->CreateFixture(&right, 0.0f);
+    scene.Add(b2Vec2(4.505f, 0.5f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_EQ(scene.system->Counters().crushed, 31u);
+    EXPECT_EQ(scene.system->Count(), 10u);
+    EXPECT_EQ(scene.system->Counters().stepsInside, 0u);
+    for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+    {
+        EXPECT_GT(scene.Position(i).x, 0.95f) << "the ten the slab does not cover";
+        EXPECT_NEAR(scene.Position(i).y, 0.03f, 1e-3f);
+    }
+}
+
 TEST(ParticlePool, ResultsAreIdenticalWithOneOrTwoThreads)
 {
     auto run = [](unsigned threads)
