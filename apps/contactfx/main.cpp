@@ -52,6 +52,10 @@ int main(int argc, char** argv)
     // A file size limit (ulimit -f) makes writes fail with EFBIG, reported naming the file, instead of
     // killing contactfx (and ffmpeg, which inherits this) with SIGXFSZ halfway through a file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // Printing into a pipe whose reader has gone (`contactfx run ... | head -1`) fails with EPIPE and is
+    // reported as a failed write of standard output, leaving no output file, instead of killing contactfx
+    // with SIGPIPE halfway with its temporary files left behind.
+    std::signal(SIGPIPE, SIG_IGN);
     // Into a file or pipe, what a command prints goes out in 64 KiB pieces, most outputs in one at the end
     // (CheckStandardOutput), where a failed write still knows its reason; a terminal stays line-buffered.
     if (::isatty(STDOUT_FILENO) == 0)

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <map>
+#include <pthread.h>
 #include <set>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -40,17 +41,52 @@ fs::path Beside(const fs::path& real, const char* what)
 }
 
 // SIGINT, SIGTERM, SIGHUP while outputs are pending: stop at the next write or Check, which unwinds and
-// removes the temporary files.
+// removes the temporary files. A command blocked (opening a FIFO) or busy (one huge frame) that has not
+// unwound kGraceSeconds later, or a second signal, stops it at once: the handler removes the temporary
+// files itself (unlink and write are all a signal handler may call), says so and exits 1.
 volatile std::sig_atomic_t g_signal = 0;
 int g_handlersInstalled = 0;
-struct sigaction g_previous[3];
-constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+constexpr int kSignals[4] = {SIGINT, SIGTERM, SIGHUP, SIGALRM};
+struct sigaction g_previous[4];
+constexpr unsigned kGraceSeconds = 1;
+// The temporary files of the prepared outputs and their owners, for the handler; changed only with the
+// signals blocked (WithSignalsBlocked).
+std::vector<std::pair<const void*, const char*>> g_temporaries;
+
+template <class Change> void WithSignalsBlocked(Change&& change)
+{
+    sigset_t all;
+    sigset_t previous;
+    sigfillset(&all);
+    ::pthread_sigmask(SIG_BLOCK, &all, &previous);
+    change();
+    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
+
+void Say(const char* text)
+{
+    const ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
+    static_cast<void>(ignored);
+}
 
 extern "C" void OnSignal(int signal)
 {
-    g_signal = signal;
+    if (signal != SIGALRM && g_signal == 0)
+    {
+        g_signal = signal;
+        ::alarm(kGraceSeconds);
+        return;
+    }
+    for (const auto& [owner, temporary] : g_temporaries)
+    {
+        ::unlink(temporary);
+    }
+    const int first = g_signal;
+    Say("contactfx: error: interrupted by ");
+    Say(first == SIGINT ? "Interrupt" : first == SIGTERM ? "Terminated" : "Hangup");
+    Say(": no output written\n");
+    ::_exit(1);
 }
-
 void InstallHandlers()
 {
     if (g_handlersInstalled++ > 0)
@@ -58,14 +94,14 @@ void InstallHandlers()
         return;
     }
     g_signal = 0;
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 4; ++i)
     {
         struct sigaction action
         {
         };
         action.sa_handler = &OnSignal;
         action.sa_flags = SA_RESTART; // reads and writes elsewhere go on; the loops check the flag
-        sigemptyset(&action.sa_mask);
+        sigfillset(&action.sa_mask);  // one handler at a time: the second signal waits for the first
         ::sigaction(kSignals[i], &action, &g_previous[i]);
     }
 }
@@ -76,7 +112,8 @@ void RestoreHandlers()
     {
         return;
     }
-    for (int i = 0; i < 3; ++i)
+    ::alarm(0);
+    for (int i = 0; i < 4; ++i)
     {
         ::sigaction(kSignals[i], &g_previous[i], nullptr);
     }
@@ -88,6 +125,8 @@ OutputFiles::OutputFiles() = default;
 
 OutputFiles::~OutputFiles()
 {
+    WithSignalsBlocked(
+        [&] { std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); });
     if (!m_committed)
     {
         RemoveTemporaries();
@@ -207,6 +246,8 @@ void OutputFiles::Prepare()
             Fail(output, "cannot write: no free temporary file name");
         }
         ::close(descriptor);
+        // Its name stays in this buffer until the object goes (cleared, never reallocated).
+        WithSignalsBlocked([&] { g_temporaries.emplace_back(this, output.temporary.c_str()); });
     }
 }
 

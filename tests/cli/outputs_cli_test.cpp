@@ -15,6 +15,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -384,6 +385,92 @@ TEST(CliOutputs, AnInterruptedRunLeavesNoFile)
     ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of stopping";
     EXPECT_EQ(WEXITSTATUS(status), 1);
     EXPECT_TRUE(FilesIn(dir).empty()) << Join(FilesIn(dir));
+}
+
+namespace
+{
+
+// Starts `contactfx args...` with standard output into `stdoutFd` and standard error into `stderrFile`.
+pid_t StartCli(const std::vector<std::string>& args, int stdoutFd, const fs::path& stderrFile)
+{
+    const pid_t child = ::fork();
+    if (child == 0)
+    {
+        const int error = ::open(stderrFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(stdoutFd, STDOUT_FILENO);
+        ::dup2(error, STDERR_FILENO);
+        const std::string binary = Binary();
+        std::vector<char*> argv{const_cast<char*>(binary.c_str())};
+        for (const std::string& arg : args)
+        {
+            argv.push_back(const_cast<char*>(arg.c_str()));
+        }
+        argv.push_back(nullptr);
+        ::execv(binary.c_str(), argv.data());
+        ::_exit(127);
+    }
+    return child;
+}
+
+} // namespace
+
+TEST(CliOutputs, APipeWhoseReaderIsGoneIsAFailedWriteAndLeavesNoOutput)
+{
+    // `contactfx run ... | head -0`: killed by SIGPIPE, it left its temporary files behind.
+    const fs::path dir = ScratchDir("outputs_broken_pipe");
+    const fs::path logs = ScratchDir("outputs_broken_pipe_log");
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    ::close(fds[0]); // the reader is gone before anything is written
+    const pid_t child = StartCli({"run", "--scene", "grinder", "--seconds", "1", "--stats",
+                                  (dir / "s.json").string(), "--events", (dir / "e.jsonl").string()},
+                                 fds[1], logs / "stderr.txt");
+    ::close(fds[1]);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    EXPECT_EQ(WEXITSTATUS(status), 1);
+    EXPECT_NE(FileText(logs / "stderr.txt").find("standard output: write failed"), std::string::npos)
+        << FileText(logs / "stderr.txt");
+    EXPECT_TRUE(FilesIn(dir).empty()) << Join(FilesIn(dir));
+}
+
+TEST(CliOutputs, AnInterruptWhileBlockedStopsAtOnceAndLeavesNoOutput)
+{
+    // Blocked opening a FIFO nobody writes: the interrupt waited for the next write, that is for ever.
+    const fs::path dir = ScratchDir("outputs_interrupt_blocked");
+    const fs::path logs = ScratchDir("outputs_interrupt_blocked_log");
+    ASSERT_EQ(::mkfifo((dir / "scene.json").c_str(), 0644), 0);
+    const int null = ::open("/dev/null", O_WRONLY);
+    const pid_t child = StartCli({"run", (dir / "scene.json").string(), "--stats", (dir / "s.json").string()},
+                                 null, logs / "e.txt");
+    ::close(null);
+    bool prepared = false; // the stats file's temporary is there: the handlers are in place
+    for (int i = 0; i < 600 && !prepared; ++i)
+    {
+        prepared = FilesIn(dir).size() > 1;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_TRUE(prepared);
+    ::kill(child, SIGINT);
+    int status = 0;
+    pid_t done = 0;
+    for (int i = 0; i < 250 && done == 0; ++i) // 5 s at most; it stops about a second after the signal
+    {
+        done = ::waitpid(child, &status, WNOHANG);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (done == 0)
+    {
+        ::kill(child, SIGKILL);
+        ::waitpid(child, &status, 0);
+        FAIL() << "still blocked 5 s after the interrupt";
+    }
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 1);
+    EXPECT_NE(FileText(logs / "e.txt").find("interrupted by Interrupt: no output written"), std::string::npos)
+        << FileText(logs / "e.txt");
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"scene.json"});
 }
 
 } // namespace cfx::test
