@@ -289,6 +289,7 @@ int Render(RenderOptions options)
         progress->Finish();
     }
     const StateHash runHash = simulation.RunHash();
+    const double lastFrameTime = simulation.Time(); // what the frames and the stats cover
     if (stats)
     {
         outputs.Write(*stats, StatsJson(simulation.GetEffects(), def.hz, &runHash));
@@ -314,8 +315,7 @@ int Render(RenderOptions options)
     // standard output leaves no output file either; it says what was rendered, not that it was written,
     // which a failing Commit() (an error of its own) would make untrue.
     std::printf("contactfx render: %s: %lld frame%s, %dx%d, %.2f s simulated\n", options.out.c_str(), frames,
-                frames == 1 ? "" : "s", options.width, options.height,
-                static_cast<double>(simulation.Time()));
+                frames == 1 ? "" : "s", options.width, options.height, lastFrameTime);
     if (!FlushStandardOutput())
     {
         return kExitError;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 namespace cfx::test
@@ -269,6 +270,30 @@ TEST(CliPlot, APlotThatIsNotAPngIsRefused)
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_NE(result.output.find("--plot"), std::string::npos) << result.output;
     EXPECT_TRUE(FilesIn(dir).empty());
+}
+
+} // namespace cfx::test
+
+namespace cfx::test
+{
+
+TEST(CliRender, TheSummaryAndTheStatsEndAtTheLastFrameForEveryOutput)
+{
+    // 10 frames at 10 fps: the last shows 0.9 s. The video's sound goes on for that frame's length, which
+    // made the summary say 1.00 s while its stats said 0.9.
+    const std::filesystem::path dir = ScratchDir("render_summary_time");
+    for (const std::string out : {"clip.mp4", "frame_%02d.png"})
+    {
+        const std::filesystem::path stats = dir / (out.substr(0, 4) + ".json");
+        const CliResult result = RunCli("render --scene grinder --seconds 1 --fps 10" + kTiny + "--out " +
+                                        (dir / out).string() + " --stats " + stats.string());
+        ASSERT_EQ(result.exitCode, 0) << result.output;
+        EXPECT_NE(result.output.find("10 frames, 48x32, 0.90 s simulated"), std::string::npos)
+            << result.output;
+        const nlohmann::json json = nlohmann::json::parse(FileText(stats));
+        EXPECT_DOUBLE_EQ(json["seconds"].get<double>(), 0.9) << out;
+        EXPECT_EQ(json["steps"].get<int>(), 54) << out;
+    }
 }
 
 } // namespace cfx::test
