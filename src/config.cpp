@@ -93,12 +93,13 @@ public:
                            std::to_string(value));
         }
     }
+    // Named by index, as the element of the file's [r, g, b, a] array (and as its type errors are).
     void Colour(const std::string& path, const Color& color, const FieldRange& range)
     {
-        Number(path + ".r", color.r, range);
-        Number(path + ".g", color.g, range);
-        Number(path + ".b", color.b, range);
-        Number(path + ".a", color.a, range);
+        Number(path + "[0]", color.r, range);
+        Number(path + "[1]", color.g, range);
+        Number(path + "[2]", color.b, range);
+        Number(path + "[3]", color.a, range);
     }
 
 private:

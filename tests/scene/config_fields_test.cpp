@@ -398,7 +398,7 @@ TEST(ConfigFields, EveryNumberIsValidatedAgainstItsRange)
                             else if constexpr (std::is_same_v<M, Color S::*>)
                             {
                                 (value.*member).g = number;
-                                at += ".g";
+                                at += "[1]";
                             }
                         },
                         field.member);

@@ -317,6 +317,20 @@ TEST(EffectsJson, ANamedValueOfAnyWrongKindIsOneProblem)
         (std::vector<std::string>{"budget.recycle: expected one of \"oldest\", \"lowestLife\", found null"}));
 }
 
+// A colour's element is named as the file has it, for a value out of range as for one of the wrong kind
+// (a user's trial found `colorEnd.g` for the one and `colorStart[1]` for the other).
+TEST(EffectsJson, AColourElementIsNamedByItsIndexInTheFile)
+{
+    EXPECT_EQ(
+        ProblemsOf(R"({"materials": ["a"], "particleTypes": [{"name": "p", "colorEnd": [0.5, 2, 0.5, 1]}]})"),
+        (std::vector<std::string>{
+            "particleTypes[0].colorEnd[1]: expected a number between 0 and 1, found 2"}));
+    const std::vector<std::string> wrongKind = ProblemsOf(
+        R"({"materials": ["a"], "particleTypes": [{"name": "p", "colorStart": [0.5, "x", 0.5, 1]}]})");
+    ASSERT_EQ(wrongKind.size(), 1u);
+    EXPECT_EQ(wrongKind[0].rfind("particleTypes[0].colorStart[1]: ", 0), 0u) << wrongKind[0];
+}
+
 // A sound rule tunes the voices of the pair rule with its two materials (docs/sound.md): one for a pair that
 // no rule makes particles for would never apply.
 TEST(EffectsJson, ASoundRuleForAPairWithoutARuleIsAnError)
