@@ -106,10 +106,11 @@ public:
     void SetForward(b2ContactListener* listener) { m_forward = listener; }
     b2ContactListener* Forward() const { return m_forward; }
 
-    /// Touching contacts of one rule, in a stable, deterministic order.
     /// The world's origin moved to `newOrigin` (b2World::ShiftOrigin): the recorded approach points move
     /// by -newOrigin.
     void ShiftOrigin(b2Vec2 newOrigin);
+
+    /// Touching contacts of one rule, in a stable, deterministic order.
     std::span<TrackedContact> Contacts(RuleId rule) { return m_byRule[rule.index]; }
     std::span<const TrackedContact> Contacts(RuleId rule) const { return m_byRule[rule.index]; }
     int RuleCount() const { return static_cast<int>(m_byRule.size()); }

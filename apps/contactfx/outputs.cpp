@@ -87,6 +87,7 @@ extern "C" void OnSignal(int signal)
     Say(": no output written\n");
     ::_exit(1);
 }
+
 void InstallHandlers()
 {
     if (g_handlersInstalled++ > 0)

@@ -273,18 +273,16 @@ TEST(ParticlePool, ParticlesInsideTwoStaticShapesAtOnceAreCrushed)
     ASSERT_EQ(scene.system->Count(), 40u);
     ASSERT_EQ(scene.system->Counters().stepsInside, 0u);
 
-    // The slab covers the first 30 particles, its bottom 1 cm above the ground.
-    b2PolygonShape slab;
-    slab.SetAsBox(1.5f, 0.1f, b2Vec2(-0.55f, 0.11f), 0.0f);
-    ground->CreateFixture(&slab, 0.0f);
-    // Two boxes 1 cm apart, and a particle of 6 cm between them.
-    b2PolygonShape left;
-    left.SetAsBox(0.5f, 0.5f, b2Vec2(4.0f, 0.5f), 0.0f);
-    ground->CreateFixture(&left, 0.0f);
-    b2PolygonShape right;
-    right.SetAsBox(0.5f, 0.5f, b2Vec2(5.01f, 0.5f), 0.0f);
-    ground->CreateFixture(&right, 0.0f);
-    scene.Add(b2Vec2(4.505f, 0.5f));
+    auto addBox = [&](float halfWidth, float halfHeight, b2Vec2 centre)
+    {
+        b2PolygonShape box;
+        box.SetAsBox(halfWidth, halfHeight, centre, 0.0f);
+        ground->CreateFixture(&box, 0.0f);
+    };
+    addBox(1.5f, 0.1f, b2Vec2(-0.55f, 0.11f)); // over the first 30 particles, its bottom 1 cm up
+    addBox(0.5f, 0.5f, b2Vec2(4.0f, 0.5f));    // two boxes 1 cm apart ...
+    addBox(0.5f, 0.5f, b2Vec2(5.01f, 0.5f));
+    scene.Add(b2Vec2(4.505f, 0.5f)); // ... and a particle of 6 cm between them
     for (int i = 0; i < 60; ++i)
     {
         scene.StepAll();
