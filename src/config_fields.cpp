@@ -287,8 +287,9 @@ const std::array kRuleFields{
     Field<R>{.name = "emission",
              .member = Choice<&R::emission>(),
              .doc = "particles per second per body pair growing with its intensity (independent of the step "
-                    "rate and of how the surfaces are cut up), or one per sample per contact per step (the "
-                    "tutorial)",
+                    "rate and of how each body's surface is cut into fixtures, chain segments and manifold "
+                    "points; a ground made of several bodies is several pairs, each emitting), or one per "
+                    "sample per contact per step (the tutorial)",
              .choices = kEmissionModes},
     Field<R>{.name = "placement",
              .member = Choice<&R::placement>(),
