@@ -498,6 +498,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.point = sample.point;
     query.normal = surfaceNormal;
     query.leaving = leaving.LengthSquared() > 0.0f ? leaving : slip;
+    query.otherBody = other.GetBody();
     query.radius = type.radius;
     SpawnPoint start;
     if (rule.placement == SpawnPlacement::tutorialDrop) // looks 1 m each way, as documented

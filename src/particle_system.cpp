@@ -112,7 +112,8 @@ struct ParticleSystem::Impl
     // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
     std::vector<b2Body*> body;
     detail::PointerMap bodySet;
-    std::uint32_t forgotten = 0; // bodies forgotten since the last DropForgotten
+    std::uint32_t forgotten = 0;        // bodies forgotten since the last DropForgotten
+    const b2Body* destroying = nullptr; // the body DestroyOwnBody is destroying: not the application's doing
     std::uint32_t head = 0;
 
     particles::WorldGeometry geometry;
@@ -156,15 +157,25 @@ struct ParticleSystem::Impl
                                      head};
     }
 
+    // Destroys a particle's body unless the application did (ForgetBody): never destroyed twice. It is
+    // still in bodySet while Box2D destroys it, so that the application's listeners, which hear of its
+    // fixtures and contacts going, still see it as a particle body (IsParticleBody).
+    void DestroyOwnBody(b2Body* particleBody)
+    {
+        if (bodySet.Find(particleBody) != nullptr)
+        {
+            destroying = particleBody;
+            world.DestroyBody(particleBody);
+            destroying = nullptr;
+            bodySet.Erase(particleBody);
+        }
+    }
+
     void ReleaseBody(std::uint32_t slot)
     {
         if (anyBodyBacked && body[slot] != nullptr)
         {
-            // A body the application destroyed (ForgetBody) is no longer ours: never destroyed twice.
-            if (bodySet.Erase(body[slot]))
-            {
-                world.DestroyBody(body[slot]);
-            }
+            DestroyOwnBody(body[slot]);
             body[slot] = nullptr;
         }
     }
@@ -468,7 +479,7 @@ void ParticleSystem::Step(float dt, b2Vec2 gravity)
 void ParticleSystem::ForgetBody(const b2Body* body)
 {
     Impl& impl = *m_impl;
-    if (impl.anyBodyBacked && body != nullptr && impl.bodySet.Erase(body))
+    if (impl.anyBodyBacked && body != nullptr && body != impl.destroying && impl.bodySet.Erase(body))
     {
         impl.forgotten += 1;
     }
@@ -600,10 +611,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         const std::vector<b2Body*>& dead = impl.dead[done.owner];
         for (std::uint32_t k = done.deadBegin; k < done.deadEnd; ++k)
         {
-            if (impl.bodySet.Erase(dead[k])) // never one the application destroyed (ForgetBody)
-            {
-                impl.world.DestroyBody(dead[k]);
-            }
+            impl.DestroyOwnBody(dead[k]);
         }
     }
     for (unsigned part = 0; part < parts; ++part)

@@ -10,6 +10,7 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 
 namespace cfx
@@ -33,8 +34,9 @@ bool IsSolidFor(const b2Fixture& fixture, const BodyFilter* ignore)
 class DiscQuery final : public b2QueryCallback
 {
 public:
-    DiscQuery(b2Vec2 center, float radius, const BodyFilter* ignore)
-        : m_ignore(ignore), m_center(center), m_behindReach(radius + kBehindReach)
+    /// `passable`: a body whose overlap is noted (overlapsPassable) but does not end the query; may be null.
+    DiscQuery(b2Vec2 center, float radius, const BodyFilter* ignore, const b2Body* passable = nullptr)
+        : m_ignore(ignore), m_passable(passable), m_center(center), m_behindReach(radius + kBehindReach)
     {
         m_disc.m_radius = radius;
         m_disc.m_p = center;
@@ -62,6 +64,11 @@ public:
             }
             if (b2TestOverlap(box, m_box) && Overlaps(shape, child, transform))
             {
+                if (fixture->GetBody() == m_passable)
+                {
+                    overlapsPassable = true;
+                    continue;
+                }
                 overlaps = true;
                 return false;
             }
@@ -81,14 +88,18 @@ public:
     }
 
     const b2AABB& Box() const { return m_reachBox; }
-    /// After the query: overlapping, or behind the nearest one-sided edge.
-    bool Inside() const
+    /// After the query: inside something other than the passable body: overlapping it, or behind the
+    /// nearest one-sided edge.
+    bool Closed() const
     {
         return overlaps ||
                (m_nearest <= m_behindReach && b2Dot(m_center - m_nearestPoint, NormalSum()) < 0.0f);
     }
+    /// After the query: inside anything.
+    bool Inside() const { return overlapsPassable || Closed(); }
 
-    bool overlaps = false;
+    bool overlaps = false;         ///< overlaps a fixture of a body other than the passable one
+    bool overlapsPassable = false; ///< overlaps a fixture of the passable body
 
 private:
     // m beyond the disc within which one-sided edges are looked at: a start point is never farther than
@@ -163,6 +174,7 @@ private:
     static constexpr int kMaxNormals = 4;
 
     const BodyFilter* m_ignore;
+    const b2Body* m_passable;
     b2Vec2 m_center;
     float m_behindReach;
     b2CircleShape m_disc;
@@ -211,10 +223,20 @@ bool ProjectOntoSurface(const SpawnQuery& query, b2Vec2 point, float reach, b2Ve
     return true;
 }
 
+// What a start tried along the surface is.
+enum class Start : std::uint8_t
+{
+    clear,    ///< outside every solid: taken
+    passable, ///< inside the body that makes the contact only (under a sliding block): walk on
+    closed,   ///< inside something else (a wall, the floor below a wall's end, a neighbour in a pile)
+};
+
 // Tries offsets along a line from the contact: 0, then on `firstSide` 1 .. 8 steps, then growing by half
 // each time, the last one `searchDistance` itself; then the same on the other side. Returns the first start
-// `attempt` accepts. The whole first side comes first: a start just across the contact (ahead of a sliding
-// block's front corner) would have its particles run over.
+// `attempt` finds clear. A side ends at a closed start: what lies beyond it (under the floor a wall
+// stands on, past a neighbour in a pile) is not reached from the contact. The whole first side comes
+// first: a start just across the contact (ahead of a sliding block's front corner) would have its
+// particles run over.
 template <class Attempt> SpawnPoint Walk(float firstSide, float step, float searchDistance, Attempt&& attempt)
 {
     SpawnPoint found;
@@ -223,10 +245,15 @@ template <class Attempt> SpawnPoint Walk(float firstSide, float step, float sear
         float offset = side == firstSide ? 0.0f : step;
         for (int k = side == firstSide ? 0 : 1; offset <= searchDistance; ++k)
         {
-            if (attempt(side * offset, found))
+            const Start start = attempt(side * offset, found);
+            if (start == Start::clear)
             {
                 found.outside = true;
                 return found;
+            }
+            if (start == Start::closed && offset > 0.0f)
+            {
+                break;
             }
             const float next = k < 8 ? offset + step : offset * 1.5f;
             offset = offset < searchDistance && next > searchDistance ? searchDistance : next;
@@ -234,6 +261,15 @@ template <class Attempt> SpawnPoint Walk(float firstSide, float step, float sear
     }
     found.outside = false;
     return found;
+}
+
+// Whether a start at `center` is clear, inside `passable` only, or closed (see Start).
+Start StartAt(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore,
+              const b2Body* passable)
+{
+    DiscQuery query(center, radius, ignore, passable);
+    world.QueryAABB(&query, query.Box());
+    return query.Closed() ? Start::closed : query.overlapsPassable ? Start::passable : Start::clear;
 }
 
 } // namespace
@@ -316,7 +352,7 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
                                 }
                                 start.position = surfacePoint + clearance * surfaceNormal;
                                 start.normal = surfaceNormal;
-                                return DiscIsClear(world, start.position, query.radius, ignore);
+                                return StartAt(world, start.position, query.radius, ignore, query.otherBody);
                             });
     if (!found.outside)
     {
@@ -336,7 +372,8 @@ SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, 
              [&](float offset, SpawnPoint& start)
              {
                  start = TutorialDropPoint(world, query.point + b2Vec2(offset, 0.0f));
-                 return start.outside && DiscIsClear(world, start.position, query.radius, ignore);
+                 return start.outside ? StartAt(world, start.position, query.radius, ignore, query.otherBody)
+                                      : Start::passable; // nothing static below: look further
              });
     if (!found.outside)
     {

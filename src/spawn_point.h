@@ -43,6 +43,9 @@ struct SpawnQuery
     /// Emitter): the start is searched on the side this points to first, so that they leave the contact
     /// instead of flying into the closing gap beside it.
     b2Vec2 leaving{0.0f, 0.0f};
+    /// The body of the other fixture of the contact (may be null): a start inside it only (under a sliding
+    /// block) does not end the walk along the surface, a start inside anything else does.
+    const b2Body* otherBody = nullptr;
     float radius = 0.01f;        ///< m, > 0: the particle's radius; its whole disc must be clear
     float searchDistance = 1.0f; ///< m: how far along the surface to look, each way
 };

@@ -77,4 +77,35 @@ TEST(SpawnSide, ASlidingBlockLeavesItsSparksBehindIt)
     EXPECT_EQ(fx.Stats().crushed, 0u);
 }
 
+// A long plank shoved into a wall: its sparks start on the wall above the plank. Walking down the wall face
+// from the contact meets the floor the wall stands on, which ends that side: a re-check found them started
+// under the floor, the free space beyond it (0 particle hits where there were 7).
+TEST(SpawnSide, AWalkAlongTheSurfaceEndsAtWhatBlocksIt)
+{
+    TestWorld scene;
+    scene.particles.checkParticles = true;
+    b2Body* floor = scene.CreateGround(0.5f, 20.0f); // top at y = 0, 2 m thick
+    b2Body* wall = scene.CreateBox(b2Vec2(-3.501f, 2.0f), 0.5f, 2.0f, 0.5f, b2_staticBody);
+    b2Body* plank = scene.CreateBox(b2Vec2(0.0f, 0.1f), 3.0f, 0.1f, 0.3f);
+    plank->SetLinearVelocity(b2Vec2(-8.0f, 0.0f));
+    Effects& fx = scene.Attach();
+    fx.SetMaterial(floor, fx.FindMaterial("concrete"));
+    fx.SetMaterial(wall, fx.FindMaterial("concrete"));
+    fx.SetMaterial(plank, fx.FindMaterial("steel"));
+    std::uint32_t seen = 0;
+    for (int step = 0; step < 30; ++step)
+    {
+        scene.Step();
+        const ParticleView view = fx.Particles();
+        for (std::uint32_t i = 0; i < view.count; ++i)
+        {
+            EXPECT_GT(view.positionY[view.Slot(i)], 0.0f) << "step " << step << ", particle " << i;
+        }
+        seen += view.count;
+    }
+    EXPECT_GT(scene.Spawned("sparks"), 10u);
+    EXPECT_GT(seen, 100u);
+    EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+}
+
 } // namespace cfx::test

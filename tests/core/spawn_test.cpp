@@ -274,7 +274,7 @@ TEST(Spawn, TutorialDropStepsAsideFromWhatStandsOnTheContact)
 {
     TestWorld scene;
     scene.CreateGround();
-    scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
+    const b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 0.4f), 0.4f, 0.9f);
     // The tutorial's own drop, 0.05 m above the ground under the wheel's contact, is inside the wheel.
     const SpawnPoint tutorial = TutorialDropPoint(*scene.world, b2Vec2(0.0f, 0.0f));
     ASSERT_TRUE(tutorial.outside);
@@ -282,6 +282,7 @@ TEST(Spawn, TutorialDropStepsAsideFromWhatStandsOnTheContact)
     SpawnQuery query;
     query.point = b2Vec2(0.0f, 0.0f);
     query.leaving = b2Vec2(5.0f, 0.0f); // the particles go toward +x: that side first
+    query.otherBody = wheel;            // the walk goes on past starts inside the wheel
     query.radius = 0.01f;
     const SpawnPoint drop = FindTutorialDropPoint(*scene.world, query, nullptr);
     ASSERT_TRUE(drop.outside);
