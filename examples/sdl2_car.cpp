@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <box2d/box2d.h>
+#include <cctype>
 #include <cmath>
 #include <contactfx/effects.h>
 #include <contactfx/error.h>
@@ -69,22 +70,25 @@ struct Car
     b2WheelJoint* rear = nullptr;
     b2WheelJoint* front = nullptr;
 
-    /// Throws std::runtime_error when the scene has no such car.
-    static Car Find(const cfx::Scene& scene)
+    /// Throws cfx::InputError naming `file` (the scene's) when the scene has no such car.
+    static Car Find(const cfx::Scene& scene, const std::string& file)
     {
         auto wheelJoint = [&](const char* name)
         {
             const cfx::SceneJoint* joint = scene.FindJoint(name);
             if (joint == nullptr || joint->joint->GetType() != e_wheelJoint)
             {
-                throw std::runtime_error(std::string("the scene has no wheel joint named ") + name);
+                throw cfx::InputError(file, "joint",
+                                      std::string("no wheel joint named \"") + name +
+                                          "\": this example drives the tutorial's car");
             }
             return static_cast<b2WheelJoint*>(joint->joint);
         };
         const cfx::SceneBody* car = scene.FindBody("car");
         if (car == nullptr)
         {
-            throw std::runtime_error("the scene has no body named car");
+            throw cfx::InputError(file, "body",
+                                  "no body named \"car\": this example drives the tutorial's car");
         }
         return Car{car->body, wheelJoint("suspension_rear"), wheelJoint("suspension_front")};
     }
@@ -155,7 +159,7 @@ struct Session
 
     explicit Session(const std::string& path)
         : scene(cfx::LoadRubeFile(path)), fx(*scene.world, cfx::EffectsDef{cfx::DefaultPreset()}),
-          car(Car::Find(scene))
+          car(Car::Find(scene, path))
     {
         // The scene's fixtures carry a `material` custom property; plain RUBE scenes get the config's
         // assignment rules instead.
@@ -437,7 +441,18 @@ bool ParseOptions(int argc, char** argv, Options& options)
         }
         else if (arg == "--screenshot" && i + 1 < argc)
         {
+            // SDL_SaveBMP writes BMP whatever the name says.
             options.screenshot = argv[++i];
+            const std::size_t dot = options.screenshot.rfind('.');
+            std::string extension = dot == std::string::npos ? "" : options.screenshot.substr(dot);
+            std::transform(extension.begin(), extension.end(), extension.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            if (extension != ".bmp")
+            {
+                std::fprintf(stderr, "--screenshot: expected a .bmp file, found \"%s\"\n",
+                             options.screenshot.c_str());
+                return false;
+            }
         }
         else if (!arg.empty() && arg[0] != '-')
         {
