@@ -6,6 +6,7 @@
 #include "emitter.h"
 #include "events.h"
 #include "fixture_materials.h"
+#include "vector_text.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
@@ -221,10 +222,9 @@ void Effects::Step(float dt)
     }
     if (!m_world.GetGravity().IsValid())
     {
-        std::ostringstream found;
-        found << "(" << m_world.GetGravity().x << ", " << m_world.GetGravity().y << ")";
         throw InputError("<api>", "gravity",
-                         "expected the world's gravity to be finite, found " + found.str());
+                         "expected the world's gravity to be finite, found " +
+                             detail::VectorText(m_world.GetGravity()));
     }
     ContactTracker& tracker = m_internals->tracker;
     detail::EventTracker& events = m_internals->events;

@@ -99,14 +99,17 @@ std::filesystem::path WrittenPath(const std::filesystem::path& file)
     return real;
 }
 
-std::string OutputFileProblem(const std::filesystem::path& given)
+namespace
+{
+
+// OutputFileProblem of `given`, whose WrittenPath is `file` (resolved once by the caller).
+std::string ProblemOfWrittenFile(const std::filesystem::path& given, const std::filesystem::path& file)
 {
     namespace fs = std::filesystem;
     if (!given.has_filename() || given.filename() == "." || given.filename() == "..")
     {
         return "names no file";
     }
-    const fs::path file = WrittenPath(given);
     std::error_code error;
     const bool link = fs::is_symlink(fs::symlink_status(given, error));
     const fs::path& named = link ? file : given; // the folder as the user wrote it, or the link's target's
@@ -168,13 +171,20 @@ std::string OutputFileProblem(const std::filesystem::path& given)
     return {};
 }
 
+} // namespace
+
+std::string OutputFileProblem(const std::filesystem::path& given)
+{
+    return ProblemOfWrittenFile(given, WrittenPath(given));
+}
+
 void WriteTextFileAtomically(const std::filesystem::path& path, std::string_view contents)
 {
-    if (const std::string problem = OutputFileProblem(path); !problem.empty())
+    const std::filesystem::path target = WrittenPath(path);
+    if (const std::string problem = ProblemOfWrittenFile(path, target); !problem.empty())
     {
         throw InputError(path.string(), "", problem);
     }
-    const std::filesystem::path target = WrittenPath(path);
     std::filesystem::path temporary;
     std::FILE* file = nullptr;
     for (int attempt = 0; attempt < 16 && file == nullptr; ++attempt)
