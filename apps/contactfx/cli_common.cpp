@@ -68,7 +68,7 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
         .add_option("--threads", options.threads,
                     "Threads for the particle step, 1 .. 8, split at any particle count (for testing: the "
                     "results are the same bits with any number); default: the machine's, split when it pays")
-        ->check(CLI::Range(1u, 8u));
+        ->check(WholeNumberIn(1, 8));
     AddEffectsOptions(command, options,
                       demo ? "Effects config JSON (overrides --preset); the tutorial scene's fixtures name "
                              "steel, rubber, concrete and dirt"

@@ -3,6 +3,7 @@
 #include "harness/command_line.h"
 
 #include <algorithm>
+#include <charconv>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,22 @@ const CLI::Validator& NamesAFile()
         [](const std::string& value) { return value.empty() ? std::string("names no file") : std::string(); },
         "");
     return check;
+}
+
+CLI::Validator WholeNumberIn(long long lowest, long long highest)
+{
+    return CLI::Validator(
+        [lowest, highest](std::string& text)
+        {
+            long long value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, value);
+            const bool inRange = error == std::errc() && stop == end && value >= lowest && value <= highest;
+            return inRange ? std::string()
+                           : "expected a whole number from " + std::to_string(lowest) + " to " +
+                                 std::to_string(highest) + ", found \"" + text + "\"";
+        },
+        "");
 }
 
 } // namespace cfx

@@ -129,7 +129,7 @@ const std::array<SceneEntry, 4>& Registry()
                    .title = "Steel boulders tumbling down a dirt slope onto concrete: dirt and sparks",
                    .file = "rockslide.json",
                    .beforeStep = ReturnHome,
-                   .view = SceneView{b2Vec2(-8.0f, 7.0f), 20.0f},
+                   .view = SceneView{.wholeWorld = true},
                    .makes = kDirtAndSparks},
     };
     return scenes;

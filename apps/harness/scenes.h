@@ -25,6 +25,7 @@ struct SceneView
 {
     b2Vec2 center{0.0f, 0.0f}; ///< m, world point at the middle of the picture
     float height = 20.0f;      ///< m of world from the bottom of the picture to its top, > 0
+    bool wholeWorld = false;   ///< show every body of the world instead (as `contactfx render` does)
 };
 
 /// One registered scene. Plain data with static storage: entries live as long as the program.

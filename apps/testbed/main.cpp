@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <limits>
 
 namespace
 {
@@ -38,7 +39,8 @@ int main(int argc, char** argv)
         ->check(cfx::NamesAFile());
     CLI::Option* frames = app.add_option("--frames", options.frames,
                                          "Run this many frames (one simulation step each) without "
-                                         "interaction, drawing the last few, then exit");
+                                         "interaction, drawing the last few, then exit")
+                              ->check(cfx::WholeNumberIn(1, std::numeric_limits<int>::max()));
     app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG")
         ->check(cfx::NamesAFile());
     app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");

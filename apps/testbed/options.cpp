@@ -41,11 +41,6 @@ void CheckOptions(const Options& options, bool framesGiven)
         throw InputError(kCommandLine, "--scene",
                          "unknown scene \"" + options.scene + "\" (registered: " + SceneNames() + ")");
     }
-    if (framesGiven && options.frames < 1)
-    {
-        throw InputError(kCommandLine, "--frames",
-                         "expected a whole number >= 1, found " + std::to_string(options.frames));
-    }
     if (!options.screenshot.empty())
     {
         if (!framesGiven)

@@ -18,18 +18,17 @@ struct Options
 {
     std::string scene = "tutorial"; ///< a registered scene (scenes.h)
     std::string effects;            ///< effects config file replacing the scene's; empty: the scene's
-    int frames = 0;                 ///< frames to run without interaction, >= 1; 0: interactive
+    int frames = 0;                 ///< frames to run without interaction, >= 1 (main.cpp); 0: interactive
     std::string screenshot;         ///< PNG of the last frame; needs frames
     bool hideParticles = false;     ///< draw the scene without its particles
     bool debug = false;             ///< start with every debug layer on (DebugLayers::All)
 };
 
-/// Throws InputError (file "<command line>", the flag as path) for an unknown scene, frames < 1 when
-/// given, a screenshot without frames or one OutputFileProblem (contactfx/files) refuses (a folder, a
-/// device, a read-only file, a missing or unwritable folder), one that is the effects file (the same
-/// name, or the same file through a symbolic or hard link: "is the input file ... not overwritten"),
-/// or a name not ending in .png. Empty names are "not given" here (explicitly empty ones are refused
-/// while parsing: harness/parse_errors.h, NamesAFile).
+/// Throws InputError (file "<command line>", the flag as path) for an unknown scene, a screenshot without
+/// frames or one OutputFileProblem (contactfx/files) refuses (a folder, a device, a read-only file, a missing
+/// or unwritable folder), one that is the effects file (the same name, or the same file through a symbolic or
+/// hard link: "is the input file ... not overwritten"), or a name not ending in .png. Empty names are "not
+/// given" here (explicitly empty ones are refused while parsing: harness/parse_errors.h, NamesAFile).
 void CheckOptions(const Options& options, bool framesGiven);
 
 } // namespace cfx::testbed

@@ -124,6 +124,10 @@ void Session::ResetView(int width, int height)
     const SceneView& view = m_entry->view;
     const float aspect = static_cast<float>(std::max(width, 1)) / static_cast<float>(std::max(height, 1));
     m_camera = MakeCamera(std::max(width, 1), std::max(height, 1), view.height * aspect, view.center);
+    if (view.wholeWorld)
+    {
+        FitWorld(m_camera, *m_simulation->GetScene().world);
+    }
     if (followCar && m_simulation->GetCar())
     {
         Follow(m_camera, *m_simulation->GetCar()->Body(), m_followLift);

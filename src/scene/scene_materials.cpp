@@ -5,10 +5,12 @@
 #include "contactfx/scene/scene_materials.h"
 
 #include "contactfx/effects.h"
+#include "scene/json_reader.h"
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <string>
+#include <variant>
 
 namespace cfx
 {
@@ -24,6 +26,27 @@ std::string KnownMaterials(const EffectsConfig& config)
         known += (known.empty() ? "" : ", ") + each;
     }
     return known.empty() ? "no materials" : known;
+}
+
+/// A property that is not a string, as the file has it: "int property 4", "vec2 property".
+std::string DescribeNonString(const CustomProperty& property)
+{
+    struct Describe
+    {
+        std::string operator()(int value) const { return "int property " + std::to_string(value); }
+        std::string operator()(float value) const
+        {
+            return "float property " + scene_detail::FormatFloat(value);
+        }
+        std::string operator()(const std::string&) const { return "string property"; }
+        std::string operator()(bool value) const
+        {
+            return value ? "bool property true" : "bool property false";
+        }
+        std::string operator()(const b2Vec2&) const { return "vec2 property"; }
+        std::string operator()(const Rgba8&) const { return "color property"; }
+    };
+    return std::visit(Describe{}, property.value);
 }
 
 } // namespace
@@ -54,7 +77,9 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
             const std::string* name = std::get_if<std::string>(&property.value);
             if (name == nullptr)
             {
-                problems.push_back({std::string(file), path, "expected the material as a string property"});
+                problems.push_back(
+                    {std::string(file), path,
+                     "expected the material as a string property, found " + DescribeNonString(property)});
                 continue;
             }
             const MaterialId material = config.FindMaterial(*name);

@@ -172,6 +172,22 @@ TEST(CliConventions, ParseErrorsNameTheCommandLineAndTheOption)
                   {"contactfx: error: <command line>: --preset: nosuch not in {default,tutorial}"});
 }
 
+// A whole-number option outside its range, beyond what its type holds or not a whole number at all says
+// the range it takes and the value as given.
+TEST(CliConventions, WholeNumbersOutOfRangeNameTheRange)
+{
+    ExpectRefused("bench debris --boxes 10001",
+                  {"<command line>: --boxes: expected a whole number from 1 to 10000, found \"10001\"\n"});
+    ExpectRefused("bench debris --boxes 4294967296", {"--boxes: expected a whole number from 1 to 10000, "
+                                                      "found \"4294967296\""});
+    ExpectRefused("bench debris --boxes -3",
+                  {"--boxes: expected a whole number from 1 to 10000, found \"-3\""});
+    ExpectRefused("bench particles --count 1e3", {"--count: expected a whole number from 1 to 4000000"});
+    ExpectRefused("bench particles --count 5 --threads 9",
+                  {"--threads: expected a whole number from 0 to 8"});
+    ExpectRefused("run --scene grinder --threads 0", {"--threads: expected a whole number from 1 to 8"});
+}
+
 // What a command prints on standard output is its result: a failed write of it (a full disk) is an error
 // on stderr and exit code 1, not a silent success.
 TEST(CliConventions, AFailedWriteOfStandardOutputIsAnError)

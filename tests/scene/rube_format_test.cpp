@@ -238,6 +238,30 @@ TEST(RubeFormat, ClosedChainsAndLegacyLoopsBecomeLoops)
     EXPECT_EQ(legacyLoop->m_vertices[4], b2Vec2(0.0f, 0.0f));
 }
 
+// Three vertices whose last repeats the first cannot be a loop (it would have 2 distinct vertices): they
+// load as the open chain they spell, there and back, with a warning saying so.
+TEST(RubeFormat, AClosedChainOfTwoDistinctVerticesLoadsOpenWithAWarning)
+{
+    const std::string json =
+        World(R"({"type": 0, "fixture": [{"chain": {"vertices": {"x": [0, 1, 0], "y": [0, 0, 0]}}}]})");
+    std::vector<Diagnostic> warnings;
+    EXPECT_TRUE(ValidateRubeString(json, "shape.json", nullptr, &warnings).empty());
+    ASSERT_EQ(warnings.size(), 1u) << test::Dump(warnings);
+    EXPECT_EQ(warnings[0].path, "body[0].fixture[0].chain.vertices");
+    EXPECT_NE(warnings[0].message.find("closed chain needs 3 distinct vertices: loaded as an open chain"),
+              std::string::npos)
+        << warnings[0].message;
+    const Scene scene = LoadRubeString(json, "shape.json");
+    const auto* chain = static_cast<const b2ChainShape*>(OnlyShape(scene));
+    EXPECT_EQ(chain->m_count, 3);
+
+    std::vector<Diagnostic> none; // four vertices closing a triangle: a loop, nothing to warn about
+    ValidateRubeString(World(R"({"type": 0, "fixture": [{"chain": {"vertices": {"x": [0, 1, 1, 0], "y":
+        [0, 0, 1, 0]}}}]})"),
+                       "shape.json", nullptr, &none);
+    EXPECT_TRUE(none.empty()) << test::Dump(none);
+}
+
 TEST(RubeFormat, CustomPropertiesOfEveryTypeOnEveryObject)
 {
     const std::string properties = R"("customProperties": [

@@ -174,7 +174,8 @@ TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
     EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",
                                     "unknown material \"glass\" (the effects config has: steel, rubber"))
         << test::Dump(problems);
-    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[1].customProperties[1]", "as a string"))
+    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[1].customProperties[1]",
+                                    "expected the material as a string property, found int property 4"))
         << test::Dump(problems);
     for (const Diagnostic& problem : problems)
     {

@@ -52,6 +52,9 @@ TEST(TestbedFlags, FramesMustBeAtLeastOne)
             {"--frames", frames});
     }
     ExpectRefused(RunTestbed("--scene grinder --frames many"), {"--frames"});
+    // Beyond an int: the range is named, not only "a whole number".
+    ExpectRefused(RunTestbed("--scene grinder --frames 2147483648 --screenshot " + shot.string()),
+                  {"--frames: expected a whole number from 1 to 2147483647, found \"2147483648\""});
     EXPECT_FALSE(std::filesystem::exists(shot));
 }
 

@@ -62,6 +62,38 @@ TEST(TestbedSession, OpensTheSceneWithItsViewAndKeepsItOnBadInput)
     EXPECT_EQ(session.Sim().Steps(), 10u);
 }
 
+// A scene whose view is its whole world (rockslide: the slope, the floor and both walls) shows every body
+// whole in the testbed's narrower picture too, not a fixed height that cuts off the top of the slope.
+TEST(TestbedSession, AWholeWorldViewShowsEveryBody)
+{
+    Opened opened("rockslide");
+    ASSERT_TRUE(opened.session.Entry().view.wholeWorld);
+    const Camera& camera = opened.session.Camera();
+    int fixtures = 0;
+    for (const b2Body* body = opened.session.Sim().GetScene().world->GetBodyList(); body != nullptr;
+         body = body->GetNext())
+    {
+        for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
+             fixture = fixture->GetNext())
+        {
+            for (int child = 0; child < fixture->GetShape()->GetChildCount(); ++child)
+            {
+                const b2AABB box = fixture->GetAABB(child);
+                for (const b2Vec2 corner : {box.lowerBound, box.upperBound})
+                {
+                    const b2Vec2 pixel = camera.ToPixels(corner);
+                    EXPECT_GE(pixel.x, 0.0f);
+                    EXPECT_LE(pixel.x, static_cast<float>(kViewWidth));
+                    EXPECT_GE(pixel.y, 0.0f);
+                    EXPECT_LE(pixel.y, static_cast<float>(kViewHeight));
+                }
+            }
+            ++fixtures;
+        }
+    }
+    EXPECT_GT(fixtures, 10);
+}
+
 TEST(TestbedSession, PauseHoldsAndSingleStepAdvancesOneStep)
 {
     Opened opened("grinder");
@@ -143,8 +175,12 @@ TEST(TestbedSession, ZoomKeepsThePointUnderTheCursorAndResizeKeepsTheHeightShown
     EXPECT_EQ(session.Camera().width, 400);
     EXPECT_FLOAT_EQ(static_cast<float>(session.Camera().height) / session.Camera().pixelsPerMetre,
                     metresHigh);
-    session.ResetView(400, 300);
-    EXPECT_FLOAT_EQ(300.0f / session.Camera().pixelsPerMetre, session.Entry().view.height);
+    session.ResetView(400, 300); // the scene's own view again, as opened at that size
+    Session fresh(kScenesDir);
+    fresh.Open(*FindScene("rockslide"));
+    fresh.ResetView(400, 300);
+    EXPECT_EQ(session.Camera().pixelsPerMetre, fresh.Camera().pixelsPerMetre);
+    EXPECT_EQ(session.Camera().center, fresh.Camera().center);
 }
 
 TEST(TestbedSession, RestartStartsOverWithTheEffectsInForce)
