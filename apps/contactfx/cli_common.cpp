@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <vector>
 
 namespace cfx::cli
 {
@@ -120,9 +121,20 @@ std::string NumberText(double value)
     return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
 }
 
-void PrintSceneWarnings(const Scene& scene)
+void PrintSceneWarnings(const Scene& scene, const std::filesystem::path& file, double hz)
 {
-    for (const Diagnostic& warning : scene.warnings)
+    std::vector<Diagnostic> warnings = scene.warnings;
+    const double sceneHz = scene.settings.stepsPerSecond;
+    if (sceneHz != hz)
+    {
+        Diagnostic rate{file.string(), "stepsPerSecond",
+                        "the scene steps at " + NumberText(sceneHz) + " Hz; this run steps at --hz " +
+                            NumberText(hz) + " (give --hz " + NumberText(sceneHz) +
+                            " to step as the scene says)"};
+        rate.warning = true;
+        warnings.push_back(std::move(rate));
+    }
+    for (const Diagnostic& warning : warnings)
     {
         std::cerr << "contactfx: " << warning.ToString() << '\n'; // "...: warning: ..."
     }

@@ -108,6 +108,14 @@ TEST(CliRender, ASequenceWritesSecondsTimesFpsNumberedFiles)
         EXPECT_TRUE(PngSize(Bytes(dir / name)).has_value()) << name;
     }
     EXPECT_NE(result.output.find("4/4 frames"), std::string::npos) << "no progress shown: " << result.output;
+
+    // round(0.2 * 0.1) = 0: still one frame, the first.
+    const std::filesystem::path one = ScratchDir("render_sequence_one");
+    ASSERT_EQ(
+        RunCli("render --demo --seconds 0.2 --fps 0.1" + kTiny + "--out " + (one / "f_%02d.png").string())
+            .exitCode,
+        0);
+    EXPECT_EQ(FilesIn(one), std::vector<std::string>{"f_00.png"});
 }
 
 TEST(CliRender, VideosGoThroughFfmpeg)

@@ -24,6 +24,32 @@ TEST(CliScene, RunSceneDrivesTheRegisteredScene)
     EXPECT_LT(Spawned(dir / "file.json", "smoke"), Spawned(dir / "scene.json", "smoke"));
 }
 
+// A scene file's own step rate is not the run's (--hz, default 60): run and render say so, naming the file
+// and the field, and say nothing when the two agree.
+TEST(CliScene, ASceneStepRateOtherThanTheRunsIsAWarning)
+{
+    const std::filesystem::path dir = ScratchDir("run_scene_rate");
+    nlohmann::json scene = nlohmann::json::parse(FileText(Scene("grinder.json")));
+    scene["stepsPerSecond"] = 30;
+    const std::filesystem::path file = dir / "grinder30.json";
+    WriteTestFile(file, scene.dump());
+    const std::string warning = file.string() +
+                                ": stepsPerSecond: warning: the scene steps at 30 Hz; this "
+                                "run steps at --hz 60 (give --hz 30 to step as the scene says)";
+    const CliResult run = RunCli("run " + file.string() + " --seconds 0.1");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find(warning), std::string::npos) << run.output;
+    const CliResult render =
+        RunCli("render " + file.string() + " --seconds 0.1 --width 32 --height 32 --out " +
+               (dir / "frame.png").string());
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_NE(render.output.find(warning), std::string::npos) << render.output;
+
+    const CliResult agreed = RunCli("run " + file.string() + " --seconds 0.1 --hz 30");
+    ASSERT_EQ(agreed.exitCode, 0) << agreed.output;
+    EXPECT_EQ(agreed.output.find("warning"), std::string::npos) << agreed.output;
+}
+
 TEST(CliScene, RunSceneTutorialIsTheDemo)
 {
     const std::filesystem::path dir = ScratchDir("run_scene_tutorial");

@@ -6,6 +6,7 @@
 #include "step_time.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -204,7 +205,7 @@ namespace
 
 struct SceneSound
 {
-    int shortScrapeEvents = 0; ///< scrapes (began .. ended) shorter than 100 ms
+    int shortScrapeEvents = 0; ///< scrapes (began .. ended) of fewer steps than 100 ms holds (6 at 60 Hz)
     int scrapeEvents = 0;
     int shortScrapeVoices = 0; ///< scrape voices shorter than 100 ms, not counting those the end cut
     VoiceLog log;
@@ -217,8 +218,10 @@ SceneSound RunScene(const char* name, float seconds)
     Simulation simulation(SceneSimulationDef(entry, std::filesystem::path(CONTACTFX_SOURCE_DIR) / "scenes"));
     SoundVoices voices(simulation.GetEffects().Config());
     SceneSound out;
-    std::map<std::uint32_t, double> began;
+    std::map<std::uint32_t, std::uint64_t> began; // step of each open scrape's scrape_began
     const auto steps = static_cast<int>(seconds / simulation.Dt());
+    // Counted in whole steps: a 6-step scrape's time difference at 60 Hz is 0.1 give or take rounding.
+    const auto shortSteps = static_cast<std::uint64_t>(std::llround(0.1 / simulation.Dt()));
     for (int i = 0; i < steps; ++i)
     {
         StepScene(entry, simulation);
@@ -226,12 +229,12 @@ SceneSound RunScene(const char* name, float seconds)
         {
             if (event.type == Type::scrapeBegan)
             {
-                began[event.id] = simulation.Time();
+                began[event.id] = simulation.Steps();
                 ++out.scrapeEvents;
             }
             else if (event.type == Type::scrapeEnded && began.count(event.id) != 0)
             {
-                out.shortScrapeEvents += simulation.Time() - began[event.id] < 0.1 ? 1 : 0;
+                out.shortScrapeEvents += simulation.Steps() - began[event.id] < shortSteps ? 1 : 0;
             }
         }
         voices.Step(simulation.GetEffects().Events(), simulation.Dt());
