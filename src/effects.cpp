@@ -173,8 +173,24 @@ Effects::~Effects()
     m_world.SetDestructionListener(m_internals->destruction.forward);
 }
 
+void Effects::CheckMaterialArguments(const void* target, const char* targetField, MaterialId material) const
+{
+    if (target == nullptr)
+    {
+        throw InputError("<api>", targetField, "null");
+    }
+    if (material.IsValid() && material.index >= m_config.materials.size())
+    {
+        throw InputError(
+            "<api>", "material",
+            "index " + std::to_string(material.index) + " names no material of this config (it has " +
+                std::to_string(m_config.materials.size()) + "; MaterialId{} removes a material)");
+    }
+}
+
 void Effects::SetMaterial(b2Fixture* fixture, MaterialId material)
 {
+    CheckMaterialArguments(fixture, "fixture", material);
     if (m_internals->materials.Get(fixture) != material)
     {
         m_internals->tracker.EndContactsOf(fixture, ScrapeEnd::materialChanged); // read the old materials
@@ -194,6 +210,7 @@ void Effects::SetContactListener(b2ContactListener* listener)
 
 void Effects::SetMaterial(b2Body* body, MaterialId material)
 {
+    CheckMaterialArguments(body, "body", material);
     for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
     {
         SetMaterial(fixture, material);

@@ -3,6 +3,7 @@
 // free up), then join the runs and destroy dead particles' bodies (serial, Box2D is single-threaded).
 #include "contactfx/particle_system.h"
 
+#include "contactfx/config.h"
 #include "contactfx/error.h"
 #include "particle_system_access.h"
 #include "particles/motion.h"
@@ -337,6 +338,19 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
                                const ParticleBudget& budget, const ParticleSystemOptions& options)
     : m_impl(std::make_unique<Impl>(world)), m_capacity(budget.capacity)
 {
+    // Used alone, nothing has checked the definition yet (Effects has: a second look costs nothing). The
+    // system never reads the names: they are not checked.
+    EffectsConfig definition;
+    definition.particleTypes.assign(types.begin(), types.end());
+    for (std::size_t i = 0; i < definition.particleTypes.size(); ++i)
+    {
+        definition.particleTypes[i].name = std::to_string(i);
+    }
+    definition.budget = budget;
+    if (std::vector<Diagnostic> problems = Validate(definition); !problems.empty())
+    {
+        throw InputError(std::move(problems));
+    }
     Impl& impl = *m_impl;
     for (const ParticleTypeDef& def : types)
     {
@@ -412,6 +426,14 @@ ParticleSystem::~ParticleSystem()
 
 void ParticleSystem::Spawn(const ParticleSpawn& spawn)
 {
+    if (spawn.type.index >= m_impl->types.size())
+    {
+        throw InputError("<api>", "type",
+                         spawn.type.IsValid() ? "index " + std::to_string(spawn.type.index) +
+                                                    " names no particle type of this system (it has " +
+                                                    std::to_string(m_impl->types.size()) + ")"
+                                              : std::string("no particle type (ParticleTypeId{})"));
+    }
     if (!(spawn.life > 0.0f))
     {
         return;

@@ -77,9 +77,10 @@ public:
     /// Gives `fixture` a material (an invalid id removes it). Takes effect at the next world step, for
     /// contacts already touching too: their scrapes end (ScrapeEnd::materialChanged), and those that go on
     /// touching are tracked again under the rule the new materials select. The same material again
-    /// changes nothing.
+    /// changes nothing. Throws InputError (file "<api>", field "fixture" or "material") for a null fixture
+    /// or an id that is neither invalid nor one of the config's materials; nothing changes then.
     void SetMaterial(b2Fixture* fixture, MaterialId material);
-    /// Gives every fixture of `body` the material.
+    /// Gives every fixture of `body` the material; throws as above (field "body" for a null body).
     void SetMaterial(b2Body* body, MaterialId material);
     /// The fixture's material, or an invalid id.
     MaterialId Material(const b2Fixture* fixture) const;
@@ -132,6 +133,9 @@ private:
     friend struct detail::EffectsAccess; // the library's own tests and tools (src/effects_access.h)
     struct Internals;      // materials table, contact tracker, listeners, emitter, event tracker
     void NotifyListener(); // gives the event listener every event of Events()
+    /// Throws SetMaterial's InputError for a null `target` (named `targetField`) or a material id that is
+    /// neither invalid nor one of the config's.
+    void CheckMaterialArguments(const void* target, const char* targetField, MaterialId material) const;
 
     b2World& m_world;
     EffectsConfig m_config;

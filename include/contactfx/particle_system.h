@@ -56,7 +56,7 @@ struct ParticleSpawn
     b2Vec2 position{0.0f, 0.0f}; ///< m, world
     b2Vec2 velocity{0.0f, 0.0f}; ///< m/s
     float life = 1.0f;           ///< (0, 1]; a particle with life <= 0 is not added
-    ParticleTypeId type;         ///< must be valid
+    ParticleTypeId type;         ///< one of the system's types (else Spawn throws)
 };
 
 /// Read-only view of live particles in spawn order, oldest first (under RecyclePolicy::lowestLife a
@@ -139,14 +139,17 @@ struct ParticleCounters
 class ParticleSystem final
 {
 public:
-    /// `types` must be valid (see Validate); they are copied. Allocates every array once.
+    /// `types` and `budget` are checked as Validate checks a config's (paths "particleTypes[i].FIELD",
+    /// "budget.FIELD"; not the names, which the system never reads): InputError listing every problem.
+    /// They are copied. Allocates every array once.
     ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types, const ParticleBudget& budget,
                    const ParticleSystemOptions& options = {});
     ~ParticleSystem();
     ParticleSystem(const ParticleSystem&) = delete;
     ParticleSystem& operator=(const ParticleSystem&) = delete;
 
-    /// Adds a particle, recycling the oldest one when full.
+    /// Adds a particle, recycling the oldest one when full. Throws InputError (file "<api>", field "type")
+    /// when spawn.type is not one of the system's types; nothing changes then.
     void Spawn(const ParticleSpawn& spawn);
     /// Advances every particle by `dt` seconds (> 0) under `gravity` (m/s^2). Throws InputError (file
     /// "<api>", field "dt" or "gravity") when dt is not finite and > 0 or gravity is not finite; nothing

@@ -235,6 +235,13 @@ std::string ReadTextFile(const std::filesystem::path& path)
     {
         throw InputError(name, "", "cannot read: it is a directory");
     }
+    const std::string tooLong = "longer than " + std::to_string(kMaxTextFileBytes >> 20) +
+                                " MiB: not read (no scene or effects config is)";
+    if (std::filesystem::is_regular_file(path, error) &&
+        std::filesystem::file_size(path, error) > kMaxTextFileBytes)
+    {
+        throw InputError(name, "", tooLong);
+    }
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"), &std::fclose);
     if (!file)
     {
@@ -245,6 +252,10 @@ std::string ReadTextFile(const std::filesystem::path& path)
     std::size_t count = 0;
     while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0)
     {
+        if (text.size() + count > kMaxTextFileBytes) // a device or a pipe that does not end
+        {
+            throw InputError(name, "", tooLong);
+        }
         text.append(buffer, count);
     }
     if (std::ferror(file.get()))

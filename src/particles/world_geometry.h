@@ -191,7 +191,9 @@ public:
     /// polygon pools.
     struct Primitive
     {
-        b2Vec2 a, b, normal;
+        // Zeroed: Box2D's b2Vec2() leaves its floats unset, and DropDuplicatePrimitives hashes and compares
+        // all three, also where a kind does not use them.
+        b2Vec2 a{0.0f, 0.0f}, b{0.0f, 0.0f}, normal{0.0f, 0.0f};
         float scalar;
         std::uint32_t first;
         std::uint32_t material;

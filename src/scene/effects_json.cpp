@@ -430,6 +430,12 @@ std::vector<Diagnostic> ValidateEffectsFile(const std::filesystem::path& path)
 
 std::string SaveEffectsString(const EffectsConfig& config)
 {
+    // Only what LoadEffectsString reads back: JSON has no NaN or infinity, and a range error would be
+    // found by the next load instead of by the code that made it.
+    if (std::vector<Diagnostic> problems = Validate(config); !problems.empty())
+    {
+        throw InputError(std::move(problems));
+    }
     Json root = Json::object();
     root["name"] = config.name;
     root["materials"] = config.materials;

@@ -90,12 +90,13 @@ void ExpectFinite(const EffectEvent& event)
 }
 
 // The emitter as Effects drives it, without Effects' config validation: the emitter must stay defined
-// for any numbers, whatever ranges validation enforces.
+// for any numbers, whatever ranges validation enforces. (The pool gets the default preset's types, which
+// the tests leave valid: a ParticleSystem refuses invalid ones itself.)
 struct RawEmitter : TestWorld
 {
     explicit RawEmitter(EffectsConfig effectsConfig)
         : config(std::move(effectsConfig)), rules(BuildRuleTable(config)), tracker(rules, materials),
-          particles(*world, config.particleTypes, config.budget), emitter(config, 1),
+          particles(*world, DefaultPreset().particleTypes, config.budget), emitter(config, 1),
           events(materials, config.budget.contacts)
     {
         stats.spawnedByType.assign(config.particleTypes.size(), 0);
@@ -274,6 +275,70 @@ TEST(ParticleSystemMisuse, StepRefusesBadTimesAndGravity)
     const ParticleView view = particles.View();
     EXPECT_EQ(view.positionX[view.Slot(0)], 0.0f); // nothing moved
     EXPECT_NO_THROW(particles.Step(kDt, b2Vec2(0.0f, -10.0f)));
+}
+
+// The first diagnostic of what `call` throws ("" when it throws nothing or something else).
+template <typename Call> Diagnostic Refusal(Call&& call)
+{
+    try
+    {
+        call();
+    }
+    catch (const InputError& error)
+    {
+        return error.Diagnostics().front();
+    }
+    return Diagnostic{};
+}
+
+TEST(ParticleSystemMisuse, AnInvalidDefinitionOrSpawnTypeIsRefused)
+{
+    TestWorld scene;
+    ParticleTypeDef type; // no name: a system alone never reads it
+    const auto types = std::span<const ParticleTypeDef>(&type, 1);
+    EXPECT_EQ(Refusal([&] { ParticleSystem(*scene.world, types, ParticleBudget{0}); }).path,
+              "budget.capacity");
+    ParticleTypeDef bad = type;
+    bad.radius = kNaN;
+    EXPECT_EQ(
+        Refusal(
+            [&]
+            { ParticleSystem(*scene.world, std::span<const ParticleTypeDef>(&bad, 1), ParticleBudget{8}); })
+            .path,
+        "particleTypes[0].radius");
+
+    ParticleSystem particles(*scene.world, types, ParticleBudget{8});
+    for (const ParticleTypeId id : {ParticleTypeId{}, ParticleTypeId{1}, ParticleTypeId{200}})
+    {
+        const Diagnostic refused = Refusal(
+            [&] {
+                particles.Spawn(ParticleSpawn{b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 0.0f), 1.0f, id});
+            });
+        EXPECT_EQ(refused.file, "<api>") << id.index;
+        EXPECT_EQ(refused.path, "type") << id.index;
+    }
+    EXPECT_EQ(particles.Count(), 0u);
+    particles.Spawn(ParticleSpawn{b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 0.0f), 1.0f, ParticleTypeId{0}});
+    EXPECT_EQ(particles.Count(), 1u);
+}
+
+TEST(EffectsMisuse, SetMaterialRefusesANullTargetAndAMaterialTheConfigLacks)
+{
+    SlideScene scene;
+    Effects& effects = *scene.effects;
+    const MaterialId steel = scene.Material("steel");
+    const MaterialId unknown{static_cast<std::uint16_t>(effects.Config().materials.size())};
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Fixture*>(nullptr), steel); }).path, "fixture");
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Body*>(nullptr), steel); }).path, "body");
+    const Diagnostic refused = Refusal([&] { effects.SetMaterial(scene.ground, unknown); });
+    EXPECT_EQ(refused.path, "material");
+    EXPECT_NE(refused.message.find("names no material of this config"), std::string::npos) << refused.message;
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(scene.box->GetFixtureList(), MaterialId{60000}); }).path,
+              "material");
+    EXPECT_EQ(effects.Material(scene.ground->GetFixtureList()), scene.Material("concrete")); // unchanged
+    EXPECT_EQ(effects.Material(scene.box->GetFixtureList()), steel);
+    effects.SetMaterial(scene.box, MaterialId{}); // the invalid id still removes it
+    EXPECT_FALSE(effects.Material(scene.box->GetFixtureList()).IsValid());
 }
 
 // --- body-backed particles destroyed by the application --------------------------------------------

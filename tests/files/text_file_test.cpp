@@ -60,6 +60,39 @@ TEST(TextFile, WritesAndReplacesAWholeFileLeavingNoTemporary)
     EXPECT_EQ(FilesIn(dir), std::vector<fs::path>{"out.json"});
 }
 
+// The message of the InputError that reading `path` throws, or "" when none is thrown.
+std::string ReadError(const fs::path& path)
+{
+    try
+    {
+        ReadTextFile(path);
+    }
+    catch (const InputError& error)
+    {
+        return error.what();
+    }
+    return "";
+}
+
+// An input longer than kMaxTextFileBytes is refused, naming the file: a regular one by its size, before
+// reading (a huge sparse file costs nothing), an endless device once that much has come.
+TEST(TextFile, AnInputLongerThanTheLimitIsRefused)
+{
+    const fs::path dir = FreshDir("contactfx_test_text_file_long");
+    const fs::path huge = dir / "huge.json";
+    WriteTextFileAtomically(huge, "{}");
+    fs::resize_file(huge, kMaxTextFileBytes + 1); // sparse
+    const std::string tooLong = ReadError(huge);
+    EXPECT_EQ(tooLong, huge.string() + ": longer than 256 MiB: not read (no scene or effects config is)");
+    fs::resize_file(huge, kMaxTextFileBytes);
+    EXPECT_EQ(ReadError(huge), "") << "exactly the limit is read";
+    fs::remove(huge);
+
+    ASSERT_TRUE(fs::is_character_file("/dev/zero"));
+    EXPECT_EQ(ReadError("/dev/zero"),
+              "/dev/zero: longer than 256 MiB: not read (no scene or effects config is)");
+}
+
 TEST(TextFile, RefusesADeviceNamingIt)
 {
     if (!fs::is_character_file("/dev/full"))

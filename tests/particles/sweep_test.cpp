@@ -13,6 +13,8 @@
 #include <box2d/b2_world.h>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <iterator>
+#include <new>
 #include <random>
 #include <set>
 #include <span>
@@ -615,6 +617,22 @@ TEST(WorldGeometry, SweepsFindWhatSweepingEveryShapeFinds)
 
 // Box2D reuses a destroyed fixture's memory for the next one, so a chain rebuilt with one vertex moved
 // can come back at the same addresses: only its vertices tell it apart. Each of them counts.
+// A primitive starts with every point zeroed (b2Vec2's own constructor leaves them unset): the duplicate
+// check hashes and compares all of them, also those its kind does not use, so leftovers in memory would
+// decide whether two equal shapes are one.
+TEST(WorldGeometry, APrimitiveStartsZeroed)
+{
+    alignas(WorldGeometry::Primitive) unsigned char memory[sizeof(WorldGeometry::Primitive)];
+    std::fill(std::begin(memory), std::end(memory), static_cast<unsigned char>(0xFF));
+    const auto* primitive = new (memory) WorldGeometry::Primitive{};
+    for (const b2Vec2 point : {primitive->a, primitive->b, primitive->normal})
+    {
+        EXPECT_EQ(point.x, 0.0f);
+        EXPECT_EQ(point.y, 0.0f);
+    }
+    EXPECT_EQ(primitive->scalar, 0.0f);
+}
+
 TEST(WorldGeometry, StaticCacheSeesAChangeInAnyChildOfAChain)
 {
     b2World world(b2Vec2(0.0f, -10.0f));

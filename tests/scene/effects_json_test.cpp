@@ -2,10 +2,12 @@
 #include "contactfx/files/text_file.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
+#include "scene/rube_test_util.h"
 
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 namespace cfx
@@ -368,6 +370,29 @@ TEST(EffectsJson, MalformedJsonHasLineAndColumn)
         EXPECT_EQ(error.Diagnostics()[0].line, 3);
         EXPECT_GT(error.Diagnostics()[0].column, 0);
     }
+}
+
+// JSON holds no NaN or infinity: an invalid config is refused, naming its fields, and nothing is written.
+TEST(EffectsJson, AnInvalidConfigIsNotSaved)
+{
+    EffectsConfig config = DefaultPreset();
+    config.particleTypes[0].radius = std::numeric_limits<float>::quiet_NaN();
+    config.rules[0].threshold = std::numeric_limits<float>::infinity();
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "contactfx_invalid_save.json";
+    std::filesystem::remove(file);
+    try
+    {
+        SaveEffectsFile(config, file);
+        ADD_FAILURE() << "saved";
+    }
+    catch (const InputError& error)
+    {
+        EXPECT_TRUE(test::HasDiagnostic(error.Diagnostics(), "particleTypes[0].radius", "found NaN"))
+            << test::Dump(error.Diagnostics());
+        EXPECT_TRUE(test::HasDiagnostic(error.Diagnostics(), "rules[0].threshold", "found inf"))
+            << test::Dump(error.Diagnostics());
+    }
+    EXPECT_FALSE(std::filesystem::exists(file));
 }
 
 TEST(EffectsJson, SaveNeverLeavesAHalfWrittenFile)

@@ -6,6 +6,7 @@
 // leaves a half-written file, a temporary file, or a device or read-only file replaced behind it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -13,7 +14,12 @@
 namespace cfx
 {
 
-/// The file's bytes. Throws InputError naming the file when it is missing, a directory or unreadable.
+/// The most ReadTextFile reads: 256 MiB, far above any scene or effects config, far below what would
+/// exhaust memory (an endless device such as /dev/zero, a huge sparse file).
+inline constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t{256} << 20;
+
+/// The file's bytes. Throws InputError naming the file when it is missing, a directory, unreadable or
+/// longer than kMaxTextFileBytes (a regular file is refused by its size before anything is read).
 std::string ReadTextFile(const std::filesystem::path& path);
 
 /// The file that a write of `file` replaces or creates: `file` made absolute, with its symbolic links
