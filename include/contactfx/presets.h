@@ -6,7 +6,7 @@
 namespace cfx
 {
 
-/// The tutorial, exactly: materials steel, rubber, concrete, dirt; rules steel+concrete -> sparks,
+/// The tutorial's rules: materials steel, rubber, concrete, dirt; rules steel+concrete -> sparks,
 /// rubber+concrete -> smoke, steel+dirt and rubber+dirt -> dirt; intensity |vA - vB| * fA * fB at the
 /// first manifold point, threshold 1, one particle per contact per step, particles dropped onto the
 /// static ground below the contact (beside the wheel or body standing there instead of inside it, the
@@ -15,6 +15,10 @@ namespace cfx
 /// property get the tutorial's guesses as assignments: steel on bodies heavier than 3 kg, concrete on
 /// static fixtures with friction > 0.5, dirt on static ones with friction < 0.5, rubber on other dynamic
 /// bodies heavier than 0.4 kg.
+/// Where it still differs from the tutorial's own code, besides the placement above: a particle body
+/// bounces off hits down to 0.5 m/s, as pool particles do (the tutorial's Box2D: 1 m/s); a contact the
+/// application disabled in PreSolve emits nothing (the tutorial's loop only looks at the point count);
+/// particles are drawn in contactfx's style (docs/rendering.md), not as the tutorial's 8-pixel points.
 EffectsConfig TutorialPreset();
 
 /// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction

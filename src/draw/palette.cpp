@@ -106,7 +106,9 @@ void DrawShapes(const Effects& effects, b2Draw& draw, const ShapePalette& palett
         }
         for (const b2Body* body = effects.World().GetBodyList(); body != nullptr; body = body->GetNext())
         {
-            if (!body->IsEnabled() || (body->GetType() == b2_staticBody) != staticPass)
+            // A body-backed particle's body is the particle, drawn as one (DrawParticles), not as a shape.
+            if (!body->IsEnabled() || (body->GetType() == b2_staticBody) != staticPass ||
+                effects.IsParticleBody(body))
             {
                 continue;
             }

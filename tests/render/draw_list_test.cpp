@@ -2,6 +2,7 @@
 // expected primitives, in palette colours, where the camera puts them.
 #include "contactfx/draw/frame_builder.h"
 #include "contactfx/effects.h"
+#include "contactfx/presets.h"
 #include "dirt_slide.h"
 #include "test_world.h"
 
@@ -119,6 +120,35 @@ TEST_F(DrawFixture, TheGroundIsOutlinedThenFilledAndWhatMovesIsSolidInPaletteCol
     ExpectPoints(Points(list, box), Corners(*crate));
     EXPECT_TRUE(list.sprites.empty());
     EXPECT_FALSE(list.overlay.shown);
+}
+
+// The tutorial preset's particles are Box2D bodies: they are drawn as particles (sprites), never also as
+// shapes in the body-type colour (--hide-particles hid the sprites and left those).
+TEST(DrawShapes, BodyBackedParticlesAreNotDrawnAsShapes)
+{
+    TestWorld world;
+    b2Body* ground = world.CreateGround();
+    b2Body* crate = world.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    world.Attach(TutorialPreset());
+    SlideRubberOverDirt(world, ground, crate);
+    int particleBodies = 0;
+    for (const b2Body* body = world.world->GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        particleBodies += world.effects->IsParticleBody(body) ? 1 : 0;
+    }
+    ASSERT_GT(particleBodies, 0);
+
+    const Camera camera = MakeCamera(200, 100, 20.0f, b2Vec2(0.0f, 0.0f));
+    FrameScratch scratch;
+    FrameOptions options;
+    options.overlay = false;
+    const DrawList& list = BuildFrame(*world.effects, 0.0f, camera, options, scratch);
+    for (const ShapeCommand& shape : list.shapes)
+    {
+        EXPECT_NE(shape.kind, ShapeKind::circle) << "a particle's body drawn as a shape";
+    }
+    EXPECT_EQ(list.shapes.size(), 3u) << "the ground's outline and fill, the crate";
+    EXPECT_FALSE(list.sprites.empty()) << "the particles, as particles";
 }
 
 TEST_F(DrawFixture, ASolidCircleHasASpokeOnlyWhenSolidAndFillsSkipWhatIsOpen)

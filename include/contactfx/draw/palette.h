@@ -50,7 +50,8 @@ enum class BodyKinds
 
 /// Draws every fixture of the effects' world through `draw` (DrawSolidPolygon for polygons,
 /// DrawSolidCircle for circles, DrawSegment for edges and chains), in `palette` colours; bodies that are
-/// disabled are skipped. Nothing else of b2World::DebugDraw (joints, AABBs) is drawn.
+/// disabled, and the bodies of body-backed particles (Effects::IsParticleBody: they are drawn as
+/// particles), are skipped. Nothing else of b2World::DebugDraw (joints, AABBs) is drawn.
 void DrawShapes(const Effects& effects, b2Draw& draw, const ShapePalette& palette,
                 BodyKinds kinds = BodyKinds::all);
 
