@@ -16,6 +16,7 @@
 #include "cli_common.h"
 #include "contactfx/version.h"
 #include "help_command.h"
+#include "outputs.h"
 #include "preset_command.h"
 #include "render_command.h"
 #include "run_command.h"
@@ -56,6 +57,8 @@ int main(int argc, char** argv)
     // reported as a failed write of standard output, leaving no output file, instead of killing contactfx
     // with SIGPIPE halfway with its temporary files left behind.
     std::signal(SIGPIPE, SIG_IGN);
+    // Ctrl-C while the inputs are read (a FIFO, a huge file) stops with the usual message, not silently.
+    cfx::cli::InstallInterruptHandlers();
     // Into a file or pipe, what a command prints goes out in 64 KiB pieces, most outputs in one at the end
     // (CheckStandardOutput), where a failed write still knows its reason; a terminal stays line-buffered.
     if (::isatty(STDOUT_FILENO) == 0)

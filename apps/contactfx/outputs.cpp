@@ -45,7 +45,9 @@ fs::path Beside(const fs::path& real, const char* what)
 // unwound kGraceSeconds later, or a second signal, stops it at once: the handler removes the temporary
 // files itself (unlink and write are all a signal handler may call), says so and exits 1.
 volatile std::sig_atomic_t g_signal = 0;
-int g_handlersInstalled = 0;
+int g_handlersInstalled = 0; // InstallInterruptHandlers' one, and one per prepared OutputFiles
+// Prepared OutputFiles alive: with none, a signal has nothing to remove and nothing to unwind for.
+volatile std::sig_atomic_t g_preparedOutputs = 0;
 constexpr int kSignals[4] = {SIGINT, SIGTERM, SIGHUP, SIGALRM};
 struct sigaction g_previous[4];
 constexpr unsigned kGraceSeconds = 1;
@@ -71,7 +73,11 @@ void Say(const char* text)
 
 extern "C" void OnSignal(int signal)
 {
-    if (signal != SIGALRM && g_signal == 0)
+    if (signal != SIGALRM && g_preparedOutputs == 0)
+    {
+        g_signal = signal; // stops at once
+    }
+    else if (signal != SIGALRM && g_signal == 0)
     {
         g_signal = signal;
         ::alarm(kGraceSeconds);
@@ -109,11 +115,14 @@ void InstallHandlers()
 
 void RestoreHandlers()
 {
+    if (g_preparedOutputs == 0)
+    {
+        ::alarm(0); // the command unwound in time: no stop from the handler
+    }
     if (--g_handlersInstalled > 0)
     {
         return;
     }
-    ::alarm(0);
     for (int i = 0; i < 4; ++i)
     {
         ::sigaction(kSignals[i], &g_previous[i], nullptr);
@@ -121,6 +130,11 @@ void RestoreHandlers()
 }
 
 } // namespace
+
+void InstallInterruptHandlers()
+{
+    InstallHandlers();
+}
 
 OutputFiles::OutputFiles() = default;
 
@@ -134,6 +148,7 @@ OutputFiles::~OutputFiles()
     }
     if (m_prepared)
     {
+        WithSignalsBlocked([] { g_preparedOutputs = g_preparedOutputs - 1; });
         RestoreHandlers();
     }
 }
@@ -227,6 +242,7 @@ void OutputFiles::Prepare()
 
     m_prepared = true;
     InstallHandlers();
+    WithSignalsBlocked([] { g_preparedOutputs = g_preparedOutputs + 1; });
     for (Output& output : m_outputs)
     {
         int descriptor = -1;

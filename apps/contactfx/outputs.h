@@ -106,4 +106,10 @@ private:
     bool m_committed = false;
 };
 
+/// Called once, first thing in main: SIGINT, SIGTERM and SIGHUP before any OutputFiles is prepared (a
+/// command reading its inputs, or with no output files) stop contactfx at once with the message the
+/// prepared outputs' stop gives ("contactfx: error: interrupted by Interrupt: no output written", exit 1).
+/// Once outputs are prepared, the signal stops the command as OutputFiles describes.
+void InstallInterruptHandlers();
+
 } // namespace cfx::cli

@@ -126,6 +126,10 @@ int ReportUnknownCommand(const CLI::App& group, const std::string& name)
 {
     const std::vector<std::string> names = CommandNames(group);
     const std::string suggestion = DidYouMean(name, names);
+    if (names.empty()) // `help run extra`: run has no commands
+    {
+        return Fail(group, "unknown command '" + name + "'" + ForCommand(group) + "; it has no commands");
+    }
     return Fail(group, "unknown command '" + name + "'" + ForCommand(group) + "; " +
                            (suggestion.empty() ? "the commands are " + JoinNames(names) : suggestion));
 }

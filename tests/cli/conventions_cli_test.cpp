@@ -86,6 +86,8 @@ TEST(CliConventions, HelpForAnUnknownCommandIsAnError)
     ExpectRefused("help rnu", {"unknown command 'rnu'", "did you mean 'run'?"});
     ExpectRefused("help bench partcles",
                   {"unknown command 'partcles' for 'contactfx bench'", "did you mean 'particles'?"});
+    ExpectRefused("help run extra",
+                  {"contactfx: error: unknown command 'extra' for 'contactfx run'; it has no commands\n"});
 }
 
 TEST(CliConventions, MistypedCommandIsNamedWithTheNearestOne)

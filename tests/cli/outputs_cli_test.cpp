@@ -473,4 +473,52 @@ TEST(CliOutputs, AnInterruptWhileBlockedStopsAtOnceAndLeavesNoOutput)
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"scene.json"});
 }
 
+// Reading an input, before any output exists (the effects config or a file to validate from a FIFO
+// nobody writes): the interrupt stops contactfx at once with the same message, where it died silently.
+TEST(CliOutputs, AnInterruptWhileReadingTheInputsStopsWithTheMessage)
+{
+    const fs::path dir = ScratchDir("outputs_interrupt_reading");
+    const fs::path logs = ScratchDir("outputs_interrupt_reading_log");
+    ASSERT_EQ(::mkfifo((dir / "fx.json").c_str(), 0644), 0);
+    const std::vector<std::vector<std::string>> commands = {
+        {"validate", (dir / "fx.json").string()},
+        {"run", "--scene", "grinder", "--effects", (dir / "fx.json").string()}};
+    for (const std::vector<std::string>& command : commands)
+    {
+        const int null = ::open("/dev/null", O_WRONLY);
+        const pid_t child = StartCli(command, null, logs / "e.txt");
+        ::close(null);
+        // The handlers are in place when /proc says SIGINT is caught (SigCgt, bit SIGINT - 1).
+        bool caught = false;
+        for (int i = 0; i < 500 && !caught; ++i)
+        {
+            const std::string status = FileText("/proc/" + std::to_string(child) + "/status");
+            const std::size_t at = status.find("SigCgt:");
+            caught = at != std::string::npos &&
+                     (std::stoull(status.substr(at + 7, 17), nullptr, 16) & (1ull << (SIGINT - 1))) != 0;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        ASSERT_TRUE(caught) << command[0];
+        ::kill(child, SIGINT);
+        int status = 0;
+        pid_t done = 0;
+        for (int i = 0; i < 250 && done == 0; ++i)
+        {
+            done = ::waitpid(child, &status, WNOHANG);
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        if (done == 0)
+        {
+            ::kill(child, SIGKILL);
+            ::waitpid(child, &status, 0);
+            FAIL() << command[0] << ": still running 5 s after the interrupt";
+        }
+        ASSERT_TRUE(WIFEXITED(status)) << command[0] << ": killed by the signal, no message";
+        EXPECT_EQ(WEXITSTATUS(status), 1);
+        EXPECT_EQ(FileText(logs / "e.txt"), "contactfx: error: interrupted by Interrupt: no output written\n")
+            << command[0];
+        EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"fx.json"});
+    }
+}
+
 } // namespace cfx::test
