@@ -244,13 +244,6 @@ void Effects::Step(float dt)
                              detail::VectorText(m_world.GetGravity()));
     }
     ContactTracker& tracker = m_internals->tracker;
-    if (m_world.GetContactManager().m_contactListener != &tracker)
-    {
-        throw InputError("<api>", "world",
-                         "its contact listener is no longer this Effects' (b2World::SetContactListener "
-                         "replaced it, and no contact would make effects): give yours to "
-                         "Effects::SetContactListener instead, which passes every callback on");
-    }
     detail::EventTracker& events = m_internals->events;
     tracker.Prune();
     events.BeginStep(tracker.Step(), dt, tracker.EndedPairs());

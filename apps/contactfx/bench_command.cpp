@@ -228,17 +228,17 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         "particles", "The particle benchmark scene: a chain of 256 segments and N respawning particles");
     particles->add_option("--count", particleOptions->count, "Particles, 1 .. 4,000,000")
         ->required()
-        ->check(WholeNumberIn(1, 4000000));
+        ->transform(WholeNumberIn(1, 4000000));
     particles->add_option("--steps", particleOptions->steps, "Timed steps, 1 .. 100,000")
-        ->check(WholeNumberIn(1, 100000))
+        ->transform(WholeNumberIn(1, 100000))
         ->capture_default_str();
     particles->add_option("--warmup", particleOptions->warmup, "Untimed steps first, 0 .. 100,000")
-        ->check(WholeNumberIn(0, 100000))
+        ->transform(WholeNumberIn(0, 100000))
         ->capture_default_str();
     particles->add_option("--mode", particleOptions->mode, "pool or bodies; both when omitted")
         ->check(CLI::IsMember({"pool", "bodies"}));
     particles->add_option("--threads", particleOptions->threads, "Threads for the pool, 0 (all) .. 8")
-        ->check(WholeNumberIn(0, 8))
+        ->transform(WholeNumberIn(0, 8))
         ->capture_default_str();
     particles->add_flag("--json", particleOptions->json, "One JSON object instead of text");
     particles->callback([particleOptions, &result]
@@ -248,7 +248,7 @@ void RegisterBenchCommand(CLI::App& app, int& result)
     CLI::App* demo =
         bench->add_subcommand("demo", "The tutorial scene: world.Step alone against world.Step plus effects");
     demo->add_option("--steps", demoOptions->steps, "Steps at 60 Hz, 1 .. 1,000,000")
-        ->check(WholeNumberIn(1, 1000000))
+        ->transform(WholeNumberIn(1, 1000000))
         ->capture_default_str();
     demo->add_flag("--json", demoOptions->json, "One JSON object instead of text");
     demo->callback([demoOptions, &result] { result = Guarded([&] { return RunDemo(*demoOptions); }); });
@@ -259,12 +259,12 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         "Steel boxes sliding down concrete ramps into a pile, particle budget full: Effects::Step against "
         "world.Step");
     debris->add_option("--boxes", debrisOptions->boxes, "Dynamic boxes, 1 .. 10,000")
-        ->check(WholeNumberIn(1, 10000))
+        ->transform(WholeNumberIn(1, 10000))
         ->capture_default_str();
     debris
         ->add_option("--steps", debrisOptions->steps,
                      "Timed steps at 60 Hz (after 150 untimed ones), 1 .. 100,000")
-        ->check(WholeNumberIn(1, 100000))
+        ->transform(WholeNumberIn(1, 100000))
         ->capture_default_str();
     debris->add_flag("--json", debrisOptions->json, "One JSON object instead of text");
     debris->callback([debrisOptions, &result]

@@ -69,7 +69,7 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
         .add_option("--threads", options.threads,
                     "Threads for the particle step, 1 .. 8, split at any particle count (for testing: the "
                     "results are the same bits with any number); default: the machine's, split when it pays")
-        ->check(WholeNumberIn(1, 8));
+        ->transform(WholeNumberIn(1, 8));
     AddEffectsOptions(command, options,
                       demo ? "Effects config JSON (overrides --preset); the tutorial scene's fixtures name "
                              "steel, rubber, concrete and dirt"
@@ -121,18 +121,22 @@ std::string NumberText(double value)
     return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
 }
 
-void PrintSceneWarnings(const Scene& scene, const std::filesystem::path& file, double hz)
+void PrintSceneWarnings(const Scene& scene, const RunOptions& options)
 {
     std::vector<Diagnostic> warnings = scene.warnings;
-    const double sceneHz = scene.settings.stepsPerSecond;
-    if (sceneHz != hz)
+    const float sceneHz = scene.settings.stepsPerSecond;
+    // For a scene file the user named; a registered scene's rate is the harness's to choose.
+    if (!options.scene.empty() && static_cast<double>(sceneHz) != options.hz)
     {
-        Diagnostic rate{file.string(), "stepsPerSecond",
-                        "the scene steps at " + NumberText(sceneHz) + " Hz; this run steps at --hz " +
-                            NumberText(hz) + " (give --hz " + NumberText(sceneHz) +
-                            " to step as the scene says)"};
-        rate.warning = true;
-        warnings.push_back(std::move(rate));
+        std::array<char, 32> text{};
+        const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), sceneHz); // shortest
+        const std::string rate(text.data(), error == std::errc() ? end : text.data());
+        Diagnostic warning{options.scene, "stepsPerSecond",
+                           "the scene steps at " + rate + " Hz; this run steps at --hz " +
+                               NumberText(options.hz) + " (give --hz " + rate +
+                               " to step as the scene says)"};
+        warning.warning = true;
+        warnings.push_back(std::move(warning));
     }
     for (const Diagnostic& warning : warnings)
     {

@@ -57,9 +57,9 @@ bool EffectsChosen(const RunOptions& options);
 
 /// Prints the warnings of a loaded scene (unknown keys, dropped polygon vertices) to stderr, one line each
 /// ("contactfx: FILE: PATH: warning: ..."): a run goes on, but the author sees what was ignored. Also one
-/// when the scene's own step rate (`stepsPerSecond`) is not the `hz` the run steps at (--hz, default 60).
-/// `file`: the scene file as the user named it.
-void PrintSceneWarnings(const Scene& scene, const std::filesystem::path& file, double hz);
+/// when the step rate (`stepsPerSecond`) of a scene file the user named is not the --hz the run steps at
+/// (default 60; 60 is also what a file without `stepsPerSecond` is read as).
+void PrintSceneWarnings(const Scene& scene, const RunOptions& options);
 
 /// Checks ranges CLI11 cannot (NaN, infinities), and that --seconds at --hz makes at least one step
 /// (round(seconds * hz) >= 1); throws InputError naming the flag.

@@ -209,7 +209,7 @@ int Render(RenderOptions options)
     outputs.Prepare();
 
     Simulation simulation(def);
-    PrintSceneWarnings(simulation.GetScene(), def.scene, options.run.hz);
+    PrintSceneWarnings(simulation.GetScene(), options.run);
     sound.Start(simulation.GetEffects().Config(), def.seed);
 
     const b2Body* followed = nullptr;

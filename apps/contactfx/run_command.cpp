@@ -95,7 +95,7 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     outputs.Prepare();
 
     Simulation simulation(scenario.def);
-    PrintSceneWarnings(simulation.GetScene(), scenario.def.scene, options.hz);
+    PrintSceneWarnings(simulation.GetScene(), options);
     sound.Start(simulation.GetEffects().Config(), options.seed);
     PlotWriter plot(plotFile, simulation.GetEffects());
     const auto steps = static_cast<std::uint64_t>(std::llround(options.seconds * options.hz));

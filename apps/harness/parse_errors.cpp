@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cfx
@@ -13,9 +14,11 @@ namespace cfx
 namespace
 {
 
-/// What a value of CLI11's type name `type` is, in words ("INT": "a whole number").
-std::string TypeInWords(const std::string& type)
+/// What a value of CLI11's type name `typeName` is, in words ("INT": "a whole number"); a validator's
+/// description after a ':' ("UINT:INT in [1 - 8]") is left out.
+std::string TypeInWords(const std::string& typeName)
 {
+    const std::string type = typeName.substr(0, typeName.find(':'));
     if (type == "INT" || type == "UINT")
     {
         return "a whole number";
@@ -113,18 +116,34 @@ const CLI::Validator& NamesAFile()
 
 CLI::Validator WholeNumberIn(long long lowest, long long highest)
 {
+    const std::string range = std::to_string(lowest) + " to " + std::to_string(highest);
     return CLI::Validator(
-        [lowest, highest](std::string& text)
+        [lowest, highest, range](std::string& text)
         {
+            std::string_view digits = text;
+            while (!digits.empty() && digits.front() == ' ')
+            {
+                digits.remove_prefix(1);
+            }
+            while (!digits.empty() && digits.back() == ' ')
+            {
+                digits.remove_suffix(1);
+            }
+            if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-')
+            {
+                digits.remove_prefix(1);
+            }
             long long value = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, error] = std::from_chars(text.data(), end, value);
-            const bool inRange = error == std::errc() && stop == end && value >= lowest && value <= highest;
-            return inRange ? std::string()
-                           : "expected a whole number from " + std::to_string(lowest) + " to " +
-                                 std::to_string(highest) + ", found \"" + text + "\"";
+            const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+            if (error != std::errc() || stop != digits.data() + digits.size() || value < lowest ||
+                value > highest)
+            {
+                return "expected a whole number from " + range + ", found \"" + text + "\"";
+            }
+            text = std::to_string(value); // what CLI11 converts: "010" is 10 here, not octal 8
+            return std::string();
         },
-        "");
+        "INT in [" + std::to_string(lowest) + " - " + std::to_string(highest) + "]");
 }
 
 } // namespace cfx

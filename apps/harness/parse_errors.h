@@ -22,9 +22,11 @@ Diagnostic DescribeParseError(const CLI::App& app, const CLI::ParseError& error)
 /// refused while parsing ("names no file"), an option not given is fine.
 const CLI::Validator& NamesAFile();
 
-/// The check of a whole-number option accepting `lowest` .. `highest`: anything else, out of range or not
-/// a whole number in decimal digits (with an optional '-'), is refused while parsing, before CLI11
-/// converts it, as "expected a whole number from 1 to 10000, found \"10001\"".
+/// The check (give it to `transform`: `check` would not let it rewrite the value) of a whole-number
+/// option accepting `lowest` .. `highest`, in decimal digits with an optional
+/// sign and spaces around ("+5", " 010 " is 10, never octal): anything else, out of range or not such a
+/// number, is refused while parsing, before CLI11 converts it, as "expected a whole number from 1 to
+/// 10000, found \"10001\"". The help shows the range after the type ("UINT:INT in [1 - 10000]").
 CLI::Validator WholeNumberIn(long long lowest, long long highest);
 
 } // namespace cfx

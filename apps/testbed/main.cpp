@@ -40,7 +40,7 @@ int main(int argc, char** argv)
     CLI::Option* frames = app.add_option("--frames", options.frames,
                                          "Run this many frames (one simulation step each) without "
                                          "interaction, drawing the last few, then exit")
-                              ->check(cfx::WholeNumberIn(1, std::numeric_limits<int>::max()));
+                              ->transform(cfx::WholeNumberIn(1, std::numeric_limits<int>::max()));
     app.add_option("--screenshot", options.screenshot, "With --frames: save the last frame as PNG")
         ->check(cfx::NamesAFile());
     app.add_flag("--hide-particles", options.hideParticles, "Draw the scene without its particles");

@@ -99,8 +99,7 @@ public:
     /// Called again without a world step in between (a paused world), it moves the particles but emits
     /// nothing and leaves the scrapes as they are: the contacts are as the last world step left them.
     /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the
-    /// world's gravity is not finite, and (field "world") when b2World::SetContactListener replaced this
-    /// object's listener; nothing changes then.
+    /// world's gravity is not finite; nothing changes then.
     void Step(float dt);
     /// Ends every scrape going on, for an application that stops stepping (a level ends, the game
     /// quits): Events() then holds one scrapeEnded per open scrape, reason ScrapeEnd::stopped, in id

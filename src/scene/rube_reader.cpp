@@ -179,7 +179,7 @@ bool ReadChain(const ObjectReader& chain, ShapeModel& shape, bool legacyLoop)
     // A closed chain is saved with its first vertex repeated at the end; without ghost vertices it becomes a
     // Box2D loop (CreateLoop), which connects the ends smoothly.
     const bool closed = points.size() >= 4 && points.front() == points.back();
-    if (!legacyLoop && points.size() == 3 && points.front() == points.back())
+    if (!legacyLoop && !hasPrev && !hasNext && points.size() == 3 && points.front() == points.back())
     {
         chain.Diagnostics().Warn(chain.FieldPath("vertices"),
                                  "the last vertex repeats the first, but a closed chain needs 3 distinct "

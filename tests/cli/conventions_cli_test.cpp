@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace cfx::test
 {
@@ -188,6 +189,15 @@ TEST(CliConventions, WholeNumbersOutOfRangeNameTheRange)
     ExpectRefused("bench particles --count 5 --threads 9",
                   {"--threads: expected a whole number from 0 to 8"});
     ExpectRefused("run --scene grinder --threads 0", {"--threads: expected a whole number from 1 to 8"});
+    ExpectRefused("bench particles --count 08x", {"--count: expected a whole number from 1 to 4000000"});
+    // Decimal whatever the zeros and sign: CLI11 alone reads "010" as octal 8.
+    const CliResult decimal =
+        RunCli("bench particles --count +010 --steps 010 --warmup 0 --threads 1 --json");
+    ASSERT_EQ(decimal.exitCode, 0) << decimal.output;
+    const nlohmann::json result = nlohmann::json::parse(decimal.output);
+    EXPECT_EQ(result["count"], 10);
+    EXPECT_EQ(result["steps"], 10);
+    EXPECT_NE(RunCli("bench debris --help").output.find("[1 - 10000]"), std::string::npos);
 }
 
 // What a command prints on standard output is its result: a failed write of it (a full disk) is an error

@@ -48,6 +48,17 @@ TEST(CliScene, ASceneStepRateOtherThanTheRunsIsAWarning)
     const CliResult agreed = RunCli("run " + file.string() + " --seconds 0.1 --hz 30");
     ASSERT_EQ(agreed.exitCode, 0) << agreed.output;
     EXPECT_EQ(agreed.output.find("warning"), std::string::npos) << agreed.output;
+
+    // The rate as the file has it (a float), and no warning for a registered scene run at another rate.
+    scene["stepsPerSecond"] = 59.99;
+    WriteTestFile(file, scene.dump());
+    const CliResult odd = RunCli("run " + file.string() + " --seconds 0.1");
+    EXPECT_NE(odd.output.find("the scene steps at 59.99 Hz; this run steps at --hz 60 (give --hz 59.99 "),
+              std::string::npos)
+        << odd.output;
+    const CliResult registered = RunCli("run --scene grinder --seconds 0.1 --hz 30");
+    ASSERT_EQ(registered.exitCode, 0) << registered.output;
+    EXPECT_EQ(registered.output.find("warning"), std::string::npos) << registered.output;
 }
 
 TEST(CliScene, RunSceneTutorialIsTheDemo)

@@ -291,20 +291,6 @@ template <typename Call> Diagnostic Refusal(Call&& call)
     return Diagnostic{};
 }
 
-// b2World::SetContactListener after the Effects silenced it (0 particles, 0 events, no error): Step now
-// refuses, naming the way that chains the application's listener.
-TEST(EffectsMisuse, AContactListenerReplacedBehindItsBackIsRefused)
-{
-    SlideScene scene;
-    b2ContactListener mine;
-    scene.world->SetContactListener(&mine);
-    scene.world->Step(kDt, 8, 3);
-    const Diagnostic refused = Refusal([&] { scene.effects->Step(kDt); });
-    EXPECT_EQ(refused.path, "world");
-    EXPECT_NE(refused.message.find("Effects::SetContactListener"), std::string::npos) << refused.message;
-    EXPECT_EQ(scene.effects->Stats().steps, 0u) << "nothing changed";
-}
-
 TEST(ParticleSystemMisuse, AnInvalidDefinitionOrSpawnTypeIsRefused)
 {
     TestWorld scene;

@@ -219,7 +219,7 @@ SceneSound RunScene(const char* name, float seconds)
     SoundVoices voices(simulation.GetEffects().Config());
     SceneSound out;
     std::map<std::uint32_t, std::uint64_t> began; // step of each open scrape's scrape_began
-    const auto steps = static_cast<int>(seconds / simulation.Dt());
+    const auto steps = static_cast<int>(std::lround(seconds / simulation.Dt())); // as the CLI: 1200 for 20 s
     // Counted in whole steps: a 6-step scrape's time difference at 60 Hz is 0.1 give or take rounding.
     const auto shortSteps = static_cast<std::uint64_t>(std::llround(0.1 / simulation.Dt()));
     for (int i = 0; i < steps; ++i)
