@@ -48,15 +48,20 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
         ->capture_default_str();
     command.add_option("--hz", options.hz, "Steps per second, [1, 10000]")->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of every random choice, 0 .. 2^64-1")
-        ->check(CLI::Validator(
+        ->transform(CLI::Validator(
             [](std::string& text)
             {
-                // Digits only (no sign, no spaces) and at most 2^64-1, where CLI11 alone would saturate.
+                // Digits only (no sign, no spaces) and at most 2^64-1, where CLI11 alone would saturate;
+                // rewritten in plain decimal, where CLI11 alone would read "010" as octal 8.
                 std::uint64_t value = 0;
                 const char* end = text.data() + text.size();
                 const auto [stop, error] = std::from_chars(text.data(), end, value);
-                const bool whole = error == std::errc() && stop == end;
-                return whole ? std::string() : "expected a whole number from 0 to 2^64-1, found " + text;
+                if (error != std::errc() || stop != end)
+                {
+                    return "expected a whole number from 0 to 2^64-1, found " + text;
+                }
+                text = std::to_string(value);
+                return std::string();
             },
             "UINT64"))
         ->capture_default_str();
@@ -126,7 +131,7 @@ void PrintSceneWarnings(const Scene& scene, const RunOptions& options)
     std::vector<Diagnostic> warnings = scene.warnings;
     const float sceneHz = scene.settings.stepsPerSecond;
     // For a scene file the user named; a registered scene's rate is the harness's to choose.
-    if (!options.scene.empty() && static_cast<double>(sceneHz) != options.hz)
+    if (!options.scene.empty() && sceneHz != static_cast<float>(options.hz)) // the run steps at a float rate
     {
         std::array<char, 32> text{};
         const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), sceneHz); // shortest

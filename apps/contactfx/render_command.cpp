@@ -349,8 +349,12 @@ void RegisterRenderCommand(CLI::App& app, int& result)
             "track anyway; docs/sound.md)")
         ->check(NamesAFile());
     render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)");
-    render->add_option("--width", options->width, "Image width, px")->capture_default_str();
-    render->add_option("--height", options->height, "Image height, px")->capture_default_str();
+    render->add_option("--width", options->width, "Image width, px")
+        ->transform(DecimalWholeNumber())
+        ->capture_default_str();
+    render->add_option("--height", options->height, "Image height, px")
+        ->transform(DecimalWholeNumber())
+        ->capture_default_str();
     render->add_option("--fps", options->fps, "Frames per second of a sequence or video")
         ->capture_default_str();
     render

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -114,36 +115,68 @@ const CLI::Validator& NamesAFile()
     return check;
 }
 
+namespace
+{
+
+/// `text` as a decimal whole number: digits with an optional sign and spaces around ("+5", " 010 " is
+/// 10); nothing for anything else (hex, a fraction, an exponent, out of long long's range).
+std::optional<long long> ParseDecimal(std::string_view text)
+{
+    while (!text.empty() && text.front() == ' ')
+    {
+        text.remove_prefix(1);
+    }
+    while (!text.empty() && text.back() == ' ')
+    {
+        text.remove_suffix(1);
+    }
+    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
+    {
+        text.remove_prefix(1);
+    }
+    long long value = 0;
+    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || stop != text.data() + text.size())
+    {
+        return std::nullopt;
+    }
+    return value;
+}
+
+} // namespace
+
 CLI::Validator WholeNumberIn(long long lowest, long long highest)
 {
     const std::string range = std::to_string(lowest) + " to " + std::to_string(highest);
     return CLI::Validator(
         [lowest, highest, range](std::string& text)
         {
-            std::string_view digits = text;
-            while (!digits.empty() && digits.front() == ' ')
-            {
-                digits.remove_prefix(1);
-            }
-            while (!digits.empty() && digits.back() == ' ')
-            {
-                digits.remove_suffix(1);
-            }
-            if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-')
-            {
-                digits.remove_prefix(1);
-            }
-            long long value = 0;
-            const auto [stop, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-            if (error != std::errc() || stop != digits.data() + digits.size() || value < lowest ||
-                value > highest)
+            const std::optional<long long> value = ParseDecimal(text);
+            if (!value || *value < lowest || *value > highest)
             {
                 return "expected a whole number from " + range + ", found \"" + text + "\"";
             }
-            text = std::to_string(value); // what CLI11 converts: "010" is 10 here, not octal 8
+            text = std::to_string(*value); // what CLI11 converts: "010" is 10 here, not octal 8
             return std::string();
         },
         "INT in [" + std::to_string(lowest) + " - " + std::to_string(highest) + "]");
+}
+
+const CLI::Validator& DecimalWholeNumber()
+{
+    static const CLI::Validator check(
+        [](std::string& text)
+        {
+            const std::optional<long long> value = ParseDecimal(text);
+            if (!value)
+            {
+                return "expected a whole number, found \"" + text + "\"";
+            }
+            text = std::to_string(*value);
+            return std::string();
+        },
+        "");
+    return check;
 }
 
 } // namespace cfx

@@ -62,6 +62,17 @@ TEST(CliRender, OneFrameAtATimeIsAPngOfTheAskedSize)
     EXPECT_EQ(size->first, 48u);
     EXPECT_EQ(size->second, 32u);
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"frame.png"}); // no temporary file left
+
+    // Sizes are decimal: CLI11 alone read "010" as octal 8 and "0x100" as 256.
+    ASSERT_EQ(RunCli("render --demo --time 0.5 --width 010 --height +012 --out " + out.string()).exitCode, 0);
+    const auto decimal = PngSize(Bytes(out));
+    ASSERT_TRUE(decimal.has_value());
+    EXPECT_EQ(decimal->first, 10u);
+    EXPECT_EQ(decimal->second, 12u);
+    const CliResult hex = RunCli("render --demo --time 0.5 --width 0x100 --height 32 --out " + out.string());
+    EXPECT_EQ(hex.exitCode, 1);
+    EXPECT_NE(hex.output.find("--width: expected a whole number, found \"0x100\""), std::string::npos)
+        << hex.output;
 }
 
 TEST(CliRender, ARegisteredSceneRendersLikeAFile)

@@ -214,6 +214,10 @@ TEST(CliRun, SeedsBeyondTwoToTheSixtyFourAreRefused)
     const CliResult largest = RunCli("demo --seconds 0.1 --seed 18446744073709551615");
     EXPECT_EQ(largest.exitCode, 0) << largest.output;
     EXPECT_NE(largest.output.find("seed 18446744073709551615"), std::string::npos) << largest.output;
+    // Decimal: CLI11 alone read "010" as octal 8.
+    const CliResult zeros = RunCli("demo --seconds 0.1 --seed 010");
+    EXPECT_EQ(zeros.exitCode, 0) << zeros.output;
+    EXPECT_NE(zeros.output.find("seed 10\n"), std::string::npos) << zeros.output;
 }
 
 // A rejected number is shown as given (shortest round trip), never rounded into its range, and

@@ -56,6 +56,10 @@ TEST(CliScene, ASceneStepRateOtherThanTheRunsIsAWarning)
     EXPECT_NE(odd.output.find("the scene steps at 59.99 Hz; this run steps at --hz 60 (give --hz 59.99 "),
               std::string::npos)
         << odd.output;
+    const CliResult matching = RunCli("run " + file.string() + " --seconds 0.1 --hz 59.99");
+    ASSERT_EQ(matching.exitCode, 0) << matching.output;
+    EXPECT_EQ(matching.output.find("warning"), std::string::npos)
+        << "59.99 is 59.99 as a float too: " << matching.output;
     const CliResult registered = RunCli("run --scene grinder --seconds 0.1 --hz 30");
     ASSERT_EQ(registered.exitCode, 0) << registered.output;
     EXPECT_EQ(registered.output.find("warning"), std::string::npos) << registered.output;
