@@ -45,8 +45,11 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
     command
         .add_option("--seconds", options.seconds,
                     "Simulated time in seconds, (0, 86400]; at least one step: 0.5 / --hz or more")
+        ->check(DecimalNumber())
         ->capture_default_str();
-    command.add_option("--hz", options.hz, "Steps per second, [1, 10000]")->capture_default_str();
+    command.add_option("--hz", options.hz, "Steps per second, [1, 10000]")
+        ->check(DecimalNumber())
+        ->capture_default_str();
     command.add_option("--seed", options.seed, "Seed of every random choice, 0 .. 2^64-1")
         ->transform(CLI::Validator(
             [](std::string& text)

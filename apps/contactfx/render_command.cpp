@@ -348,7 +348,8 @@ void RegisterRenderCommand(CLI::App& app, int& result)
             "Also write the sound to this WAV file (48 kHz, 16-bit mono; an .mp4 gets it as its audio "
             "track anyway; docs/sound.md)")
         ->check(NamesAFile());
-    render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)");
+    render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)")
+        ->check(DecimalNumber());
     render->add_option("--width", options->width, "Image width, px")
         ->transform(DecimalWholeNumber())
         ->capture_default_str();
@@ -356,12 +357,14 @@ void RegisterRenderCommand(CLI::App& app, int& result)
         ->transform(DecimalWholeNumber())
         ->capture_default_str();
     render->add_option("--fps", options->fps, "Frames per second of a sequence or video")
+        ->check(DecimalNumber())
         ->capture_default_str();
     render
         ->add_option("--follow", options->follow,
                      "Body (by name) the camera follows; when the scene has none, the whole world shows")
         ->capture_default_str();
     render->add_option("--view", options->view, "Metres shown across the picture when following a body")
+        ->check(DecimalNumber())
         ->capture_default_str();
     render->add_flag("--scale-bar", options->scaleBar,
                      "Draw a scale bar of a round length in the bottom left corner");

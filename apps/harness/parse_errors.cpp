@@ -179,4 +179,16 @@ const CLI::Validator& DecimalWholeNumber()
     return check;
 }
 
+const CLI::Validator& DecimalNumber()
+{
+    static const CLI::Validator check(
+        [](const std::string& text)
+        {
+            const bool hex = text.find_first_of("xX") != std::string::npos;
+            return hex ? "expected a number in decimal, found \"" + text + "\"" : std::string();
+        },
+        "");
+    return check;
+}
+
 } // namespace cfx

@@ -33,4 +33,8 @@ CLI::Validator WholeNumberIn(long long lowest, long long highest);
 /// command checks itself: "010" is 10, "0x10" is refused ("expected a whole number, found \"0x10\"").
 const CLI::Validator& DecimalWholeNumber();
 
+/// The check of a number option: refuses hex ("0x10", which CLI11 alone reads as 16) while parsing; the
+/// command checks the range (and NaN) itself.
+const CLI::Validator& DecimalNumber();
+
 } // namespace cfx

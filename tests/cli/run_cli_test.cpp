@@ -231,6 +231,11 @@ TEST(CliRun, RangeErrorsShowTheValueAsGiven)
                   {"--seconds: expected a number in (0, 86400], found 86400.0000001\n"});
     ExpectRefused("run --scene grinder --seconds -5", stats, {"found -5\n"});
     ExpectRefused("run --scene grinder --hz nan", stats, {"found nan\n"});
+    // Decimal only: CLI11 alone read "0x10" as 16 s.
+    ExpectRefused("run --scene grinder --seconds 0x10", stats,
+                  {"--seconds: expected a number in decimal, found \"0x10\"\n"});
+    ExpectRefused("render --scene grinder --fps 0X1p4 --out " + (stats.parent_path() / "f_%d.png").string(),
+                  stats, {"--fps: expected a number in decimal"});
 }
 
 // round(seconds * hz) steps: a --seconds below half a step at that --hz would simulate nothing, which is
