@@ -333,4 +333,22 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     return out;
 }
 
+std::vector<Diagnostic> ValidateParticles(std::span<const ParticleTypeDef> types,
+                                          const ParticleBudget& budget, std::string_view file)
+{
+    std::vector<Diagnostic> out;
+    Checker check(file, out);
+    if (types.size() >= ParticleTypeId::kNone)
+    {
+        check.Fail("particleTypes", "expected at most 65534 particle types");
+    }
+    const EffectsConfig none; // particle types have no field naming a material or another type
+    for (std::size_t i = 0; i < types.size(); ++i)
+    {
+        CheckFields(check, "particleTypes[" + std::to_string(i) + "]", types[i], ParticleTypeFields(), none);
+    }
+    CheckFields(check, "budget", budget, BudgetFields(), none);
+    return out;
+}
+
 } // namespace cfx

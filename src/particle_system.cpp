@@ -338,16 +338,8 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
                                const ParticleBudget& budget, const ParticleSystemOptions& options)
     : m_impl(std::make_unique<Impl>(world)), m_capacity(budget.capacity)
 {
-    // Used alone, nothing has checked the definition yet (Effects has: a second look costs nothing). The
-    // system never reads the names: they are not checked.
-    EffectsConfig definition;
-    definition.particleTypes.assign(types.begin(), types.end());
-    for (std::size_t i = 0; i < definition.particleTypes.size(); ++i)
-    {
-        definition.particleTypes[i].name = std::to_string(i);
-    }
-    definition.budget = budget;
-    if (std::vector<Diagnostic> problems = Validate(definition); !problems.empty())
+    // Used alone, nothing has checked the definition yet (Effects has: a second look costs nothing).
+    if (std::vector<Diagnostic> problems = ValidateParticles(types, budget); !problems.empty())
     {
         throw InputError(std::move(problems));
     }

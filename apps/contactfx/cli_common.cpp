@@ -122,11 +122,26 @@ void CheckRunOptions(const RunOptions& options)
     }
 }
 
-std::string NumberText(double value)
+namespace
+{
+
+template <typename Number> std::string ShortestText(Number value)
 {
     std::array<char, 64> text{};
     const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
     return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
+}
+
+} // namespace
+
+std::string NumberText(double value)
+{
+    return ShortestText(value);
+}
+
+std::string NumberText(float value)
+{
+    return ShortestText(value);
 }
 
 void PrintSceneWarnings(const Scene& scene, const RunOptions& options)
@@ -136,9 +151,7 @@ void PrintSceneWarnings(const Scene& scene, const RunOptions& options)
     // For a scene file the user named; a registered scene's rate is the harness's to choose.
     if (!options.scene.empty() && sceneHz != static_cast<float>(options.hz)) // the run steps at a float rate
     {
-        std::array<char, 32> text{};
-        const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), sceneHz); // shortest
-        const std::string rate(text.data(), error == std::errc() ? end : text.data());
+        const std::string rate = NumberText(sceneHz); // as the file has it: "59.99", not 59.9900016784668
         Diagnostic warning{options.scene, "stepsPerSecond",
                            "the scene steps at " + rate + " Hz; this run steps at --hz " +
                                NumberText(options.hz) + " (give --hz " + rate +

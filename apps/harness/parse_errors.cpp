@@ -59,6 +59,31 @@ const CLI::Option* OptionNamedIn(const CLI::App& app, const std::string& message
     return named;
 }
 
+/// `text` as a decimal whole number: digits with an optional sign and spaces around ("+5", " 010 " is
+/// 10); nothing for anything else (hex, a fraction, an exponent, out of long long's range).
+std::optional<long long> ParseDecimal(std::string_view text)
+{
+    while (!text.empty() && text.front() == ' ')
+    {
+        text.remove_prefix(1);
+    }
+    while (!text.empty() && text.back() == ' ')
+    {
+        text.remove_suffix(1);
+    }
+    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
+    {
+        text.remove_prefix(1);
+    }
+    long long value = 0;
+    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || stop != text.data() + text.size())
+    {
+        return std::nullopt;
+    }
+    return value;
+}
+
 } // namespace
 
 Diagnostic DescribeParseError(const CLI::App& app, const CLI::ParseError& error)
@@ -114,36 +139,6 @@ const CLI::Validator& NamesAFile()
         "");
     return check;
 }
-
-namespace
-{
-
-/// `text` as a decimal whole number: digits with an optional sign and spaces around ("+5", " 010 " is
-/// 10); nothing for anything else (hex, a fraction, an exponent, out of long long's range).
-std::optional<long long> ParseDecimal(std::string_view text)
-{
-    while (!text.empty() && text.front() == ' ')
-    {
-        text.remove_prefix(1);
-    }
-    while (!text.empty() && text.back() == ' ')
-    {
-        text.remove_suffix(1);
-    }
-    if (text.size() > 1 && text.front() == '+' && text[1] != '-')
-    {
-        text.remove_prefix(1);
-    }
-    long long value = 0;
-    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || stop != text.data() + text.size())
-    {
-        return std::nullopt;
-    }
-    return value;
-}
-
-} // namespace
 
 CLI::Validator WholeNumberIn(long long lowest, long long highest)
 {

@@ -13,6 +13,7 @@
 #include "contactfx/sound_config.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,5 +66,10 @@ struct EffectsConfig
 
 /// Every problem in `config`, each with `file` as given and the field path. Empty when valid.
 std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view file = "<api>");
+
+/// What Validate checks of particle types and a budget (paths "particleTypes[i].FIELD", "budget.FIELD"),
+/// but not the names, which a ParticleSystem used alone never reads.
+std::vector<Diagnostic> ValidateParticles(std::span<const ParticleTypeDef> types,
+                                          const ParticleBudget& budget, std::string_view file = "<api>");
 
 } // namespace cfx

@@ -139,8 +139,7 @@ struct ParticleCounters
 class ParticleSystem final
 {
 public:
-    /// `types` and `budget` are checked as Validate checks a config's (paths "particleTypes[i].FIELD",
-    /// "budget.FIELD"; not the names, which the system never reads): InputError listing every problem.
+    /// `types` and `budget` are checked by ValidateParticles (config.h): InputError listing every problem.
     /// They are copied. Allocates every array once.
     ParticleSystem(b2World& world, std::span<const ParticleTypeDef> types, const ParticleBudget& budget,
                    const ParticleSystemOptions& options = {});
