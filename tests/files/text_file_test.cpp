@@ -51,6 +51,18 @@ std::string WriteError(const fs::path& path, std::string_view text)
 
 } // namespace
 
+// Every test's scratch folder is under its own build (tests/CMakeLists.txt sets TMPDIR), so the suites of
+// two builds run at once on one machine never write into each other's folders.
+TEST(TestScratch, FoldersAreUnderThisBuild)
+{
+    const fs::path scratch = fs::weakly_canonical(fs::temp_directory_path());
+    const fs::path build = fs::weakly_canonical(CONTACTFX_BINARY_DIR);
+    const auto [buildEnd, scratchAt] =
+        std::mismatch(build.begin(), build.end(), scratch.begin(), scratch.end());
+    EXPECT_EQ(buildEnd, build.end()) << scratch << " is not under " << build;
+    EXPECT_TRUE(fs::is_directory(scratch)) << scratch;
+}
+
 TEST(TextFile, WritesAndReplacesAWholeFileLeavingNoTemporary)
 {
     const fs::path dir = FreshDir("contactfx_test_text_file_write");
