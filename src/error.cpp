@@ -21,6 +21,16 @@ std::string Diagnostic::ToString() const
     return text.str();
 }
 
+std::size_t CountProblems(const std::vector<Diagnostic>& diagnostics)
+{
+    std::size_t count = 0;
+    for (const Diagnostic& diagnostic : diagnostics)
+    {
+        count += diagnostic.unlisted > 0 ? diagnostic.unlisted : 1;
+    }
+    return count;
+}
+
 static std::string FirstMessage(const std::vector<Diagnostic>& diagnostics)
 {
     return diagnostics.empty() ? std::string("invalid input") : diagnostics.front().ToString();

@@ -211,15 +211,16 @@ void PrintText(const Report& report)
         std::cout << warning.ToString() << '\n';
     }
     const std::string warnings =
-        report.warnings.empty() ? "" : " (" + Count(report.warnings.size(), "warning", "warnings") + ")";
+        report.warnings.empty() ? ""
+                                : " (" + Count(CountProblems(report.warnings), "warning", "warnings") + ")";
     if (!report.errors.empty())
     {
         for (const Diagnostic& problem : report.errors)
         {
             std::cout << problem.ToString() << '\n';
         }
-        std::cout << report.file << ": " << Count(report.errors.size(), "problem", "problems") << warnings
-                  << '\n';
+        std::cout << report.file << ": " << Count(CountProblems(report.errors), "problem", "problems")
+                  << warnings << '\n';
     }
     else if (report.kind == FileKind::effects)
     {

@@ -11,6 +11,7 @@
 // apart from errors; `contactfx validate --strict` counts them as errors.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,11 +28,17 @@ struct Diagnostic
     int line = 0;         ///< 1-based line for malformed JSON, 0 when unknown
     int column = 0;       ///< 1-based column for malformed JSON, 0 when unknown
     bool warning = false; ///< true: the input still loads (see the file comment)
+    /// > 0: this entry is not a problem itself but the note that ends a list a loader cut short (a hostile
+    /// file): this many more problems (or warnings) were found and not listed.
+    std::size_t unlisted = 0;
 
     /// "file:line:column: message" or "file: path: message", on one line; "warning: " before the message
     /// of a warning.
     std::string ToString() const;
 };
+
+/// How many problems `diagnostics` stands for: its entries, a note counting as the problems it did not list.
+std::size_t CountProblems(const std::vector<Diagnostic>& diagnostics);
 
 /// Thrown on bad input. Holds at least one diagnostic; what() is the first one's ToString().
 class InputError : public std::runtime_error

@@ -83,20 +83,24 @@ DiagnosticList::DiagnosticList(std::string file) : m_file(std::move(file)) {}
 
 void DiagnosticList::Push(std::vector<Diagnostic>& items, bool& truncated, Diagnostic diagnostic)
 {
-    if (truncated)
+    if (!truncated && items.size() + 1 < kLimit)
     {
+        items.push_back(std::move(diagnostic));
         return;
     }
-    if (items.size() + 1 >= kLimit)
+    if (!truncated)
     {
         truncated = true;
-        Diagnostic last{diagnostic.file, "",
-                        "too many problems: stopped reporting after " + std::to_string(kLimit - 1)};
-        last.warning = diagnostic.warning;
-        items.push_back(std::move(last));
-        return;
+        Diagnostic note{diagnostic.file, "", ""};
+        note.warning = diagnostic.warning;
+        items.push_back(std::move(note));
     }
-    items.push_back(std::move(diagnostic));
+    // The note counts what it does not list, so that the total is still known.
+    Diagnostic& note = items.back();
+    note.unlisted += 1;
+    note.message = "too many " + std::string(note.warning ? "warnings" : "problems") + ": " +
+                   std::to_string(note.unlisted) + " more not listed (" +
+                   std::to_string(kLimit - 1 + note.unlisted) + " in all)";
 }
 
 void DiagnosticList::Add(std::string path, std::string message)

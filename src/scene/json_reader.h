@@ -22,9 +22,10 @@ namespace cfx::scene_detail
 
 using Json = nlohmann::json;
 
-/// The diagnostics of one input: errors, and apart from them warnings (Diagnostic::warning). Each list stops
-/// recording (with a last note) after kLimit entries so that a hostile file cannot make it grow without
-/// bound. Empty() and Size() count errors only.
+/// The diagnostics of one input: errors, and apart from them warnings (Diagnostic::warning). Each list keeps
+/// at most kLimit - 1 entries and then ends with a note counting the rest (Diagnostic::unlisted), so that a
+/// hostile file cannot make it grow without bound and the total is still known (CountProblems). Empty()
+/// and Size() count the errors' entries only.
 class DiagnosticList
 {
 public:

@@ -282,6 +282,27 @@ TEST(CliValidate, SeveralProblemsInOneFileAreAllListed)
     }
 }
 
+TEST(CliValidate, AFileWithMoreProblemsThanAreListedGivesTheirTotal)
+{
+    // 1,500 bodies of a bad type: the first 999 problems are listed, a last line counts the other 501, and
+    // the summary gives all 1,500.
+    const std::filesystem::path dir = ScratchDir("validate_too_many");
+    std::string bodies;
+    for (int i = 0; i < 1500; ++i)
+    {
+        bodies += std::string(i == 0 ? "" : ",") + R"({"type": 5})";
+    }
+    WriteTestFile(dir / "many.json", R"({"body": [)" + bodies + "]}");
+    const std::string file = (dir / "many.json").string();
+    const CliResult result = RunCli("validate " + file);
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.output.find(file + ": too many problems: 501 more not listed (1500 in all)\n"),
+              std::string::npos)
+        << result.output.substr(result.output.size() - 300);
+    EXPECT_NE(result.output.find(file + ": 1500 problems\n"), std::string::npos)
+        << result.output.substr(result.output.size() - 300);
+}
+
 TEST(CliValidate, ScenesAreCheckedAgainstTheSelectedEffectsConfig)
 {
     const std::filesystem::path dir = ScratchDir("validate_effects");

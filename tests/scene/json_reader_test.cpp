@@ -114,7 +114,32 @@ TEST(DiagnosticList, StopsAtItsLimit)
         diagnostics.Add("p", "m");
     }
     EXPECT_EQ(diagnostics.Size(), DiagnosticList::kLimit);
-    EXPECT_NE(diagnostics.Items().back().message.find("too many"), std::string::npos);
+    // The last entry is a note counting the rest, not a problem of its own: the total is still known.
+    const Diagnostic& note = diagnostics.Items().back();
+    EXPECT_EQ(note.message, "too many problems: 4001 more not listed (5000 in all)");
+    EXPECT_EQ(note.unlisted, 4001u);
+    EXPECT_EQ(diagnostics.Items()[DiagnosticList::kLimit - 2].unlisted, 0u);
+    EXPECT_EQ(CountProblems(diagnostics.Items()), 5000u);
+    for (int i = 0; i < 2000; ++i)
+    {
+        diagnostics.Warn("p", "w");
+    }
+    EXPECT_EQ(diagnostics.Warnings().back().message, "too many warnings: 1001 more not listed (2000 in all)");
+    EXPECT_EQ(CountProblems(diagnostics.Warnings()), 2000u);
+}
+
+TEST(DiagnosticList, ListsEverythingUpToItsLimit)
+{
+    DiagnosticList diagnostics("f.json");
+    for (std::size_t i = 0; i < DiagnosticList::kLimit - 1; ++i)
+    {
+        diagnostics.Add("p", "m");
+    }
+    EXPECT_EQ(diagnostics.Items().back().message, "m");
+    EXPECT_EQ(CountProblems(diagnostics.Items()), DiagnosticList::kLimit - 1);
+    diagnostics.Add("p", "m");
+    EXPECT_EQ(diagnostics.Items().back().message, "too many problems: 1 more not listed (1000 in all)");
+    EXPECT_EQ(CountProblems(diagnostics.Items()), DiagnosticList::kLimit);
 }
 
 TEST(JsonText, ReportsLineAndColumnOfMalformedJson)
