@@ -393,6 +393,19 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
     context.events.Scrape(rule, pairSlot, measure);
 }
 
+int Emitter::Budgeted(float owed, EffectsStats& stats) const
+{
+    const int budget = std::max(m_spawnBudget, 0);
+    const int count = ClampedCount(owed, budget);
+    if (owed >= static_cast<float>(budget) + 1.0f)
+    {
+        // Finite (rates and bursts are capped by the rule), and far below 2^64 after the min.
+        const float whole = std::floor(std::min(owed, 1.0e18f));
+        stats.spawnOverCapacity += static_cast<std::uint64_t>(whole) - static_cast<std::uint64_t>(count);
+    }
+    return count;
+}
+
 void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity)
 {
     const RuleDef& rule = context.rule;
@@ -404,7 +417,7 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
     float& emissionCarry = m_emissionCarry[pairSlot];
     const float owed = emissionCarry + rate * context.dt;
     // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
-    const int count = ClampedCount(owed, std::max(m_spawnBudget, 0));
+    const int count = Budgeted(owed, context.stats);
     const float carry = owed - static_cast<float>(count);
     emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)
@@ -445,7 +458,7 @@ void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
     const float burst =
         std::min(context.rule.burstMax,
                  context.rule.burstPerSpeed * (tracked.approachSpeed - context.rule.impactThreshold));
-    const int count = ClampedCount(burst, std::max(m_spawnBudget, 0));
+    const int count = Budgeted(burst, context.stats);
     if (count > 0)
     {
         const ContactSample sample = SampleAt(tracked.contact, tracked.approachPoint, tracked.approachNormal);
@@ -461,7 +474,11 @@ void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
 void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
                              float intensity, int count)
 {
-    count = std::min(count, m_spawnBudget);
+    if (count > m_spawnBudget)
+    {
+        context.stats.spawnOverCapacity += static_cast<std::uint64_t>(count - std::max(m_spawnBudget, 0));
+        count = m_spawnBudget;
+    }
     if (count <= 0)
     {
         return;

@@ -28,7 +28,8 @@
 // tracker decides impacts and scrapes and keeps their ids. An impact it accepts bursts particles here.
 //
 // Bounds: one Emit spawns at most the pool's capacity (more would only recycle each other; rates and
-// bursts are clamped before any float becomes an int), and a manifold point with non-finite inputs (a body
+// bursts are clamped before any float becomes an int; what is owed beyond it is counted in
+// EffectsStats::spawnOverCapacity), and a manifold point with non-finite inputs (a body
 // with a NaN or infinite velocity, a NaN friction or impulse) is skipped and counted
 // (EffectsStats::nonFiniteSamples): nothing non-finite reaches a particle, an intensity or an event.
 //
@@ -101,6 +102,9 @@ private:
 
     void Gather(RuleContext& context, std::uint32_t contactIndex);
     void UpdatePair(RuleContext& context, std::uint32_t pairSlot);
+    /// The whole particles of `owed` this Emit may still spawn (at most what is left of the pool's
+    /// capacity); those beyond it are added to stats.spawnOverCapacity.
+    int Budgeted(float owed, EffectsStats& stats) const;
     void EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity);
     void Burst(RuleContext& context, const TrackedContact& tracked);
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,

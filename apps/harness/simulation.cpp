@@ -188,6 +188,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     root["particle_steps_inside"] = stats.particleStepsInside;
     root["crossings"] = stats.crossings;
     root["spawn_rejected"] = stats.spawnRejected;
+    root["spawn_over_capacity"] = stats.spawnOverCapacity;
     root["non_finite"] = stats.nonFinite;
     root["skipped_bodies"] = stats.skippedBodies;
     root["non_finite_samples"] = stats.nonFiniteSamples;

@@ -45,6 +45,9 @@ struct EffectsStats
     /// Particles not spawned because no start outside every solid existed near their contact (piles,
     /// crevices): a particle never starts inside.
     std::uint64_t spawnRejected = 0;
+    /// Particles not spawned because a step's emission owed more than the pool's capacity (budget.capacity):
+    /// one step spawns at most that many, as more would only recycle each other within the step.
+    std::uint64_t spawnOverCapacity = 0;
     /// Particles that died, or were never stored, because their position or velocity was not finite or
     /// beyond 1e7 (m, m/s): thrown out of the world by absurd numbers (ParticleCounters::nonFinite).
     std::uint64_t nonFinite = 0;

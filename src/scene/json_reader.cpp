@@ -63,13 +63,24 @@ std::string LimitText(const NumberLimits& limits)
     return "<= " + FormatDouble(limits.max);
 }
 
-bool WithinLimits(double value, const NumberLimits& limits)
+// A limit as the float a number written as the limit reads as; beyond float range, infinite.
+float AsFloatLimit(double limit)
 {
-    if (limits.minExclusive ? !(value > limits.min) : !(value >= limits.min))
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    return std::fabs(limit) <= kFloatMax ? static_cast<float>(limit) : (limit < 0.0 ? -kInfinity : kInfinity);
+}
+
+// Compared as floats: the number was read into one, and the limit as written ("1e24") must pass even where
+// the float it rounds to lies beyond the decimal value (1e24 as a float is 1.0000000138e24).
+bool WithinLimits(float value, const NumberLimits& limits)
+{
+    const float min = AsFloatLimit(limits.min);
+    if (limits.minExclusive ? !(value > min) : !(value >= min))
     {
         return false;
     }
-    return value <= limits.max;
+    return value <= AsFloatLimit(limits.max);
 }
 
 std::string Missing(std::string_view expected)

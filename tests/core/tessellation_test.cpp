@@ -50,6 +50,7 @@ struct SlideResult
     std::uint64_t sparks = 0;
     std::uint32_t contactsMax = 0;
     std::uint64_t rejected = 0;
+    std::uint64_t overCapacity = 0;
     std::uint64_t inside = 0;
     std::uint32_t scrapes = 0; ///< scrapes that began
     std::uint32_t impacts = 0;
@@ -101,6 +102,7 @@ SlideResult Slide(EffectsConfig config, Ground ground, const SlideSetup& setup,
     result.contactsMax = fx.Stats().rules[0].contactsMax;
     result.inside = fx.Stats().spawnedInsideSolid;
     result.rejected = fx.Stats().spawnRejected;
+    result.overCapacity = fx.Stats().spawnOverCapacity;
     if (state != nullptr)
     {
         const ParticleView view = fx.Particles();
@@ -208,6 +210,35 @@ TEST(EmissionTessellation, LandingOnSegmentsIsOneImpact)
         EXPECT_EQ(chain05.impacts, 1u);
         EXPECT_GT(box.sparks, 0u) << "the burst";
         EXPECT_NEAR(static_cast<double>(chain05.sparks), static_cast<double>(box.sparks), 2.0);
+    }
+}
+
+TEST(EmissionBudget, AStepSpawnsAtMostTheCapacityAndCountsWhatItOwedBeyond)
+{
+    // A held slide whose rule always owes 600 sparks a second: 10 a step at 60 Hz (no bursts). With room
+    // for 3, every emitting step spawns 3 and counts 7 over capacity; with room for 100, all 10.
+    EffectsConfig config = DefaultPreset();
+    config.rules[0].ratePerIntensity = 1.0e6f;
+    config.rules[0].maxRate = 600.0f;
+    config.rules[0].burstPerSpeed = 0.0f;
+    const SlideSetup setup{.seconds = 1.0f, .speed = 8.0f, .hold = true};
+    for (const std::uint32_t capacity : {3u, 100u})
+    {
+        EffectsConfig capped = config;
+        capped.budget.capacity = capacity;
+        const SlideResult slide = Slide(capped, Ground::box, setup);
+        ASSERT_GT(slide.sparks, 0u) << capacity;
+        if (capacity == 3)
+        {
+            EXPECT_EQ(slide.sparks % 3, 0u);
+            EXPECT_EQ(slide.overCapacity, slide.sparks / 3 * 7);
+        }
+        else
+        {
+            EXPECT_EQ(slide.sparks % 10, 0u);
+            EXPECT_EQ(slide.overCapacity, 0u);
+        }
+        EXPECT_EQ(slide.rejected, 0u) << capacity;
     }
 }
 

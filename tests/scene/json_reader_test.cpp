@@ -99,6 +99,21 @@ TEST(ReadInteger, RequiresIntegersInRange)
     EXPECT_EQ(diagnostics.Size(), 4u);
 }
 
+TEST(ReadFloat, ALimitAsWrittenIsWithinItself)
+{
+    // 1e24 and 0.1 as floats lie above the decimal values; the numbers written as the limits still pass,
+    // and the next float beyond them does not.
+    DiagnosticList diagnostics("f.json");
+    EXPECT_EQ(ReadFloat(Json(1e24), "a", diagnostics, NumberLimits{0.0, 1e24}), 1e24f);
+    EXPECT_EQ(ReadFloat(Json(0.1), "a", diagnostics, NumberLimits{-0.1, 0.1}), 0.1f);
+    EXPECT_EQ(ReadFloat(Json(-0.1), "a", diagnostics, NumberLimits{-0.1, 0.1}), -0.1f);
+    EXPECT_TRUE(diagnostics.Empty()) << diagnostics.Items().front().ToString();
+    EXPECT_FALSE(ReadFloat(Json(static_cast<double>(std::nextafter(1e24f, 2e24f))), "a", diagnostics,
+                           NumberLimits{0.0, 1e24}));
+    EXPECT_FALSE(ReadFloat(Json(0.1), "a", diagnostics, NumberLimits{0.1, 1.0, true}));
+    EXPECT_EQ(diagnostics.Size(), 2u);
+}
+
 TEST(Paths, JoinKeysAndIndices)
 {
     EXPECT_EQ(JoinPath("", "body"), "body");

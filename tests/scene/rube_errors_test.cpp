@@ -148,6 +148,16 @@ TEST(RubeErrors, NumbersOutOfRange)
     EXPECT_TRUE(HasDiagnostic(LoadErrors(R"({"velocityIterations": -1})"), "velocityIterations"));
 }
 
+TEST(RubeErrors, TheDocumentedLimitsThemselvesLoad)
+{
+    // docs/rube.md: massData-I 0 .. 1e24, massData-mass 0 .. 1e12 (1e24 as a float is above 1e24).
+    EXPECT_NO_THROW(LoadRubeString(World(R"({"type": 2, "massData-mass": 1e12, "massData-I": 1e24,
+        "fixture": [{"density": 1e6, "friction": 1000, "restitution": 10, "circle": {"radius": 1}}]})"),
+                                   "test.json"));
+    EXPECT_TRUE(HasDiagnostic(LoadErrors(World(R"({"type": 2, "massData-mass": 1, "massData-I": 1.01e24})")),
+                              "body[0].massData-I", "between 0 and 1e+24, found 1.01e+24"));
+}
+
 TEST(RubeErrors, BadPolygons)
 {
     EXPECT_TRUE(
