@@ -60,6 +60,7 @@ void ContactTracker::Reserve(std::uint32_t contacts)
     m_pairs.reserve(contacts);
     m_freePairs.reserve(contacts);
     m_endedPairs.reserve(contacts);
+    m_endingPairs.reserve(contacts);
 }
 
 void ContactTracker::Track(b2Contact* contact, bool firstTouch)
@@ -127,6 +128,18 @@ std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
         edgeA = edgeA->next;
         edgeB = edgeB->next;
     }
+    // The same two bodies' pair of this rule, waiting to end since its last contact left: it goes on.
+    for (auto ending = m_endingPairs.begin(); ending != m_endingPairs.end(); ++ending)
+    {
+        if (ending->ended.reason == ScrapeEnd::contactEnded && m_pairs[ending->ended.slot].rule == rule &&
+            ((ending->bodyA == bodyA && ending->bodyB == bodyB) ||
+             (ending->bodyA == bodyB && ending->bodyB == bodyA)))
+        {
+            const std::uint32_t slot = ending->ended.slot;
+            m_endingPairs.erase(ending); // keeps the others' order; no allocation
+            return slot;
+        }
+    }
     std::uint32_t slot = 0;
     if (!m_freePairs.empty())
     {
@@ -141,6 +154,7 @@ std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
         // once at most): freeing a pair inside a callback never allocates.
         m_freePairs.reserve(m_pairs.capacity());
         m_endedPairs.reserve(m_pairs.capacity());
+        m_endingPairs.reserve(m_pairs.capacity());
     }
     m_pairs[slot] = TrackedPair{};
     m_pairs[slot].rule = rule;
@@ -172,9 +186,21 @@ void ContactTracker::Untrack(b2Contact* contact, ScrapeEnd reason)
             ended.fixtureB = RuleFixtureB(list[slot]);
             ended.materialA = m_materials.Recorded(ended.fixtureA);
             ended.materialB = m_materials.Recorded(ended.fixtureB);
-            m_endedPairs.push_back(ended);
+            if (reason == ScrapeEnd::contactEnded)
+            {
+                m_endingPairs.push_back(
+                    EndingPair{ended, contact->GetFixtureA()->GetBody(), contact->GetFixtureB()->GetBody()});
+            }
+            else
+            {
+                m_endedPairs.push_back(ended);
+                m_freePairs.push_back(ended.slot);
+            }
         }
-        m_freePairs.push_back(list[slot].pair);
+        else
+        {
+            m_freePairs.push_back(list[slot].pair);
+        }
     }
     m_index.Erase(contact);
     if (slot + 1 != list.size())
@@ -216,6 +242,12 @@ void ContactTracker::Prune()
             }
         }
     }
+    for (const EndingPair& ending : m_endingPairs)
+    {
+        m_endedPairs.push_back(ending.ended);
+        m_freePairs.push_back(ending.ended.slot);
+    }
+    m_endingPairs.clear();
 }
 
 void ContactTracker::ShiftOrigin(b2Vec2 newOrigin)
@@ -262,12 +294,20 @@ void ContactTracker::EndContactsOf(const b2Fixture* fixture, ScrapeEnd reason)
 
 void ContactTracker::MarkDestroyed(const b2Fixture* fixture)
 {
-    for (EndedPair& ended : m_endedPairs)
+    const auto mark = [fixture](EndedPair& ended)
     {
         if (ended.fixtureA == fixture || ended.fixtureB == fixture)
         {
             ended.reason = ScrapeEnd::destroyed;
         }
+    };
+    for (EndedPair& ended : m_endedPairs)
+    {
+        mark(ended);
+    }
+    for (EndingPair& ending : m_endingPairs)
+    {
+        mark(ending.ended);
     }
 }
 

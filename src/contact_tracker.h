@@ -24,7 +24,11 @@
 // When the last contact of a pair that an Effects step has seen leaves, the pair goes into EndedPairs()
 // with that contact's fixtures: the modules that keep state per pair slot learn there that the slot's
 // pair is gone (a pair that began and ended between two steps was never seen, so nobody holds state
-// for it).
+// for it). A pair whose last contact stops touching is only held for ending until the step reads it
+// (Prune): Box2D may report that end before the next contact of the same two bodies begins in the same
+// world step (a circle rolling from one chain segment onto the next, in one direction of the chain), and a
+// contact of the same rule between the same bodies that begins meanwhile takes the pair back, its slot and
+// everything kept for it (the scrape goes on).
 //
 // Threading: Box2D 2.4 calls listeners on the thread running b2World::Step; use from that thread only.
 #pragma once
@@ -117,7 +121,8 @@ public:
     std::size_t TrackedCount() const { return m_index.Size(); }
     bool IsTracked(const b2Contact* contact) const { return m_index.Find(contact) != nullptr; }
 
-    /// After b2World::Step: drops contacts that became sensors or stopped touching without EndContact.
+    /// After b2World::Step: drops contacts that became sensors or stopped touching without EndContact,
+    /// then ends the pairs that lost their last contact and did not get one back (EndedPairs).
     void Prune();
     /// Once the step has read what was recorded (after emission), before the next b2World::Step: zeroes
     /// the recorded impulses, forgets new touches and ended pairs, and advances the step counter. Pairs
@@ -175,6 +180,15 @@ private:
     std::vector<TrackedPair> m_pairs;       // by slot; slots with contacts == 0 are free
     std::vector<std::uint32_t> m_freePairs; // free slots, reused last freed first
     std::vector<EndedPair> m_endedPairs;
+    // A seen pair whose last contact stopped touching since the last Prune: ended there unless a contact of
+    // the same rule between the same bodies takes it back first.
+    struct EndingPair
+    {
+        EndedPair ended;
+        const b2Body* bodyA = nullptr;
+        const b2Body* bodyB = nullptr;
+    };
+    std::vector<EndingPair> m_endingPairs; // in the order their last contacts left
     std::uint32_t m_nextId = 1;
     std::uint64_t m_step = 0;
     bool m_solved = false; // PreSolve was called since the last EndStep

@@ -213,6 +213,56 @@ TEST(EmissionTessellation, LandingOnSegmentsIsOneImpact)
     }
 }
 
+TEST(EmissionTessellation, ACircleRollingAlongAChainIsOneScrapeEitherWay)
+{
+    // A steel disc held at 6 m/s along a concrete chain of 0.1 m segments: Box2D hands the disc from one
+    // segment's contact to the next, in one direction of the chain reporting the old one's end before the
+    // new one's begin within the same world step. Either way it is one sliding contact: one scrape.
+    for (const float direction : {-1.0f, 1.0f})
+    {
+        for (const float hz : {30.0f, 60.0f, 120.0f})
+        {
+            TestWorld scene;
+            b2BodyDef ground;
+            b2Body* floor = scene.world->CreateBody(&ground);
+            std::vector<b2Vec2> points;
+            for (int i = 0; i <= 2000; ++i)
+            {
+                points.emplace_back(100.0f - 0.1f * static_cast<float>(i), 0.0f); // right to left: front up
+            }
+            b2ChainShape chain;
+            chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(101.0f, 0.0f),
+                              b2Vec2(-101.0f, 0.0f));
+            b2FixtureDef fixture;
+            fixture.shape = &chain;
+            fixture.friction = 0.8f;
+            floor->CreateFixture(&fixture);
+            b2Body* disc = scene.CreateCircle(b2Vec2(0.1f, 0.3f), 0.3f, 0.6f);
+            disc->SetFixedRotation(true);
+            Effects& fx = scene.Attach(DefaultPreset());
+            fx.SetMaterial(floor, fx.FindMaterial("concrete"));
+            fx.SetMaterial(disc, fx.FindMaterial("steel"));
+            int began = 0;
+            int ended = 0;
+            const float dt = 1.0f / hz;
+            for (int i = 0; i < static_cast<int>(2.0f * hz); ++i)
+            {
+                disc->SetLinearVelocity(b2Vec2(6.0f * direction, disc->GetLinearVelocity().y));
+                scene.world->Step(dt, 8, 3);
+                fx.Step(dt);
+                for (const EffectEvent& event : fx.Events())
+                {
+                    began += event.type == EffectEventType::scrapeBegan ? 1 : 0;
+                    ended += event.type == EffectEventType::scrapeEnded ? 1 : 0;
+                }
+            }
+            EXPECT_EQ(began, 1) << "direction " << direction << ", " << hz << " Hz";
+            EXPECT_EQ(ended, 0) << "direction " << direction << ", " << hz << " Hz";
+            EXPECT_GT(scene.Spawned("sparks"), 0u);
+        }
+    }
+}
+
 TEST(EmissionBudget, AStepSpawnsAtMostTheCapacityAndCountsWhatItOwedBeyond)
 {
     // A held slide whose rule always owes 600 sparks a second: 10 a step at 60 Hz (no bursts). With room
