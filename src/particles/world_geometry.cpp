@@ -14,7 +14,6 @@
 #include <box2d/b2_world.h>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace cfx::particles
 {
@@ -471,20 +470,39 @@ void WorldGeometry::DropDuplicatePrimitives()
         }
         return equal;
     };
-    std::unordered_multimap<std::uint64_t, std::uint32_t> seen;
-    seen.reserve(m_primitives.size());
+    // An open-addressing table of the kept primitives (index + 1, 0: empty) by their contents' hash, at
+    // most half full; it and the hashes keep their room from one build to the next, so a rebuild of as many
+    // primitives as before allocates nothing.
+    std::size_t tableSize = 16;
+    while (tableSize < 2 * m_primitives.size())
+    {
+        tableSize *= 2;
+    }
+    m_dedupTable.assign(tableSize, 0);
+    m_dedupHashes.resize(m_primitives.size());
+    const std::size_t mask = tableSize - 1;
     std::uint32_t kept = 0;
     for (std::uint32_t index = 0; index < m_primitives.size(); ++index)
     {
-        const Primitive& primitive = m_primitives[index];
+        const Primitive primitive = m_primitives[index];
         const std::uint64_t hash = contents(primitive);
-        const auto [first, last] = seen.equal_range(hash);
-        if (std::any_of(first, last,
-                        [&](const auto& entry) { return same(m_primitives[entry.second], primitive); }))
+        std::size_t at = static_cast<std::size_t>(hash) & mask;
+        bool duplicate = false;
+        for (; m_dedupTable[at] != 0; at = (at + 1) & mask)
+        {
+            const std::uint32_t other = m_dedupTable[at] - 1;
+            if (m_dedupHashes[other] == hash && same(m_primitives[other], primitive))
+            {
+                duplicate = true;
+                break;
+            }
+        }
+        if (duplicate)
         {
             continue; // the same shape again: a particle meets it once
         }
-        seen.emplace(hash, kept);
+        m_dedupTable[at] = kept + 1;
+        m_dedupHashes[kept] = hash;
         m_primitives[kept] = primitive;
         m_primitiveBoxes[kept] = m_primitiveBoxes[index];
         ++kept;
@@ -701,7 +719,8 @@ std::size_t WorldGeometry::Bytes() const
            (m_polygonVertices.capacity() + m_polygonNormals.capacity()) * sizeof(b2Vec2) +
            m_staticGrid.Bytes() + m_movingBodies.capacity() * sizeof(MovingBody) +
            m_movingShapes.capacity() * sizeof(MovingShape) + m_movingBoxes.capacity() * sizeof(b2AABB) +
-           m_movingGrid.Bytes();
+           m_movingGrid.Bytes() + m_dedupTable.capacity() * sizeof(std::uint32_t) +
+           m_dedupHashes.capacity() * sizeof(std::uint64_t);
 }
 
 } // namespace cfx::particles

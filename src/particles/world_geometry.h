@@ -256,6 +256,8 @@ private:
     std::vector<Primitive> m_primitives;
     std::vector<b2AABB> m_primitiveBoxes;
     std::vector<b2Vec2> m_polygonVertices, m_polygonNormals;
+    std::vector<std::uint32_t> m_dedupTable;  ///< DropDuplicatePrimitives' hash table, kept between builds
+    std::vector<std::uint64_t> m_dedupHashes; ///< by kept primitive: its contents' hash
     Grid m_staticGrid;
 
     std::vector<MovingBody> m_movingBodies;

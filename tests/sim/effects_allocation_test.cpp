@@ -60,5 +60,39 @@ TEST(EffectsAllocation, NoneInTheDebrisSceneAfterItsFirstSecond)
     EXPECT_GE(scene.Fx().Stats().liveMax, scene.Fx().Config().budget.capacity * 9 / 10);
 }
 
+TEST(EffectsAllocation, NoneWhenTheStaticGeometryIsRebuilt)
+{
+    // A rebuild of the static cache (the origin shifted, a static body moved, a static fixture's friction
+    // changed) of as many primitives as before allocates nothing: its arrays and tables keep their room.
+    const SceneEntry& tutorial = *FindScene("tutorial");
+    SimulationDef def = SceneSimulationDef(tutorial, kScenesDir);
+    Simulation simulation(def);
+    b2World& world = simulation.GetEffects().World();
+    b2Body* ground = nullptr;
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        ground = body->GetType() == b2_staticBody ? body : ground;
+    }
+    ASSERT_NE(ground, nullptr);
+    const long made = AllocationsAfterWarmUp(600, 60,
+                                             [&, step = 0]() mutable
+                                             {
+                                                 if (step % 60 == 30)
+                                                 {
+                                                     const b2Vec2 shift(0.5f, 0.0f);
+                                                     world.ShiftOrigin(shift);
+                                                     simulation.GetEffects().ShiftOrigin(shift);
+                                                 }
+                                                 else if (step % 60 == 45)
+                                                 {
+                                                     ground->GetFixtureList()->SetFriction(
+                                                         ground->GetFixtureList()->GetFriction() + 0.01f);
+                                                 }
+                                                 ++step;
+                                                 StepScene(tutorial, simulation);
+                                             });
+    EXPECT_EQ(made, 0);
+}
+
 } // namespace
 } // namespace cfx::test
