@@ -2,6 +2,7 @@
 
 #include "contactfx/error.h"
 #include "contactfx/files/text_file.h"
+#include "harness/command_line.h"
 
 #include <atomic>
 #include <cerrno>
@@ -161,10 +162,12 @@ void OutputFiles::AddInput(const fs::path& file)
     }
 }
 
-OutputFiles::Handle OutputFiles::Add(const std::string& flag, const fs::path& file)
+OutputFiles::Handle OutputFiles::Add(const std::string& flag, const fs::path& file,
+                                     const std::string& extension)
 {
     Output output;
     output.flag = flag;
+    output.extension = extension;
     output.target = file;
     output.real = WrittenPath(file);
     m_outputs.push_back(std::move(output));
@@ -203,6 +206,12 @@ void OutputFiles::Prepare()
         if (output.scratch)
         {
             continue; // beside another output, whose checks cover its folder
+        }
+        if (const std::string problem = ExtensionProblem(output.target.string(), output.extension);
+            !output.extension.empty() && !problem.empty())
+        {
+            problems.push_back(Diagnostic{kCommandLine, output.flag, problem});
+            continue;
         }
         const std::string problem = OutputFileProblem(output.target);
         if (!problem.empty())

@@ -3,6 +3,7 @@
 //
 // Every output flag (--stats, --events, --plot, render --out and its frames, preset --out) registers its
 // path here. Prepare() checks them all before anything is simulated and reports every problem at once:
+// - a target that must have an extension (--plot .png, --audio .wav) has it;
 // - the path names a file in a folder that exists and can be written to (OutputFileProblem, the check
 //   every file write of contactfx makes: contactfx/files/text_file.h);
 // - an existing target is a regular file (not a directory, device, FIFO or socket: `--stats /dev/full`
@@ -45,8 +46,9 @@ public:
     /// them fails on its own).
     void AddInput(const std::filesystem::path& file);
 
-    /// Registers `file`, given by option `flag` ("--stats"). Nothing is checked until Prepare().
-    Handle Add(const std::string& flag, const std::filesystem::path& file);
+    /// Registers `file`, given by option `flag` ("--stats"). Nothing is checked until Prepare(). With
+    /// `extension` (".png"), Prepare() also refuses a file not named so (ExtensionProblem).
+    Handle Add(const std::string& flag, const std::filesystem::path& file, const std::string& extension = "");
 
     /// Registers a scratch file for `flag`: a temporary file beside `file` (another output's target),
     /// created by Prepare() like the others and always removed, never renamed into place (the audio of a
@@ -92,6 +94,7 @@ private:
         std::filesystem::path temporary; ///< empty until Prepare()
         std::FILE* stream = nullptr;     ///< Append()'s stream, open until Commit()
         bool scratch = false;            ///< AddScratch(): removed at Commit(), never renamed
+        std::string extension;           ///< the one the target must have; empty: any
     };
 
     [[noreturn]] void Fail(const Output& output, const std::string& message) const;

@@ -15,14 +15,8 @@ void AddPlotOption(CLI::App& command, std::string& file)
         ->check(NamesAFile());
 }
 
-void CheckPlotFile(const std::string& file)
-{
-    CheckExtension("--plot", file, ".png");
-}
-
 PlotWriter::PlotWriter(std::string file, const Effects& effects) : m_file(std::move(file))
 {
-    CheckPlotFile(m_file);
     if (!m_file.empty())
     {
         m_recorder.emplace(effects.Config().rules.size());

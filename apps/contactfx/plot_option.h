@@ -19,14 +19,11 @@ namespace cfx::cli
 /// Adds --plot FILE.png to `command`, storing the file name in `file`.
 void AddPlotOption(CLI::App& command, std::string& file);
 
-/// Throws InputError naming --plot when `file` is neither empty nor a .png.
-void CheckPlotFile(const std::string& file);
-
 /// Records a run for its plot when a plot file was asked for; does nothing otherwise.
 class PlotWriter
 {
 public:
-    /// `file` empty: no plot. Throws InputError naming --plot when the file is not a .png.
+    /// `file` empty: no plot. The command registers the file with its outputs, which check it is a .png.
     PlotWriter(std::string file, const Effects& effects);
     /// After each step of `effects` (dt in seconds).
     void AfterStep(const Effects& effects, float dt);

@@ -68,7 +68,6 @@ InputError AfterTime(const InputError& error, double seconds)
 int Simulate(const RunOptions& options, const std::string& what, const std::string& plotFile)
 {
     CheckRunOptions(options);
-    CheckPlotFile(plotFile);
     if (!options.audio.empty())
     {
         CheckAudioSeconds(options.seconds, "--audio");
@@ -89,7 +88,7 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     }
     if (!plotFile.empty())
     {
-        plotOutput = outputs.Add("--plot", plotFile);
+        plotOutput = outputs.Add("--plot", plotFile, ".png");
     }
     SoundOutput sound(outputs, options.audio, options.voices);
     outputs.Prepare();

@@ -47,8 +47,7 @@ SoundOutput::SoundOutput(OutputFiles& outputs, const std::string& audio, const s
 {
     if (!audio.empty())
     {
-        CheckExtension("--audio", audio, ".wav");
-        m_audio = outputs.Add("--audio", audio);
+        m_audio = outputs.Add("--audio", audio, ".wav");
     }
     else if (!video.empty())
     {

@@ -10,18 +10,23 @@
 namespace cfx
 {
 
-void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension)
+std::string ExtensionProblem(const std::string& file, const std::string& extension)
 {
     if (file.empty())
     {
-        return;
+        return "";
     }
     std::string found = std::filesystem::path(file).extension().string();
     std::transform(found.begin(), found.end(), found.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (found != extension)
+    return found == extension ? "" : "expected a " + extension + " file, found \"" + file + "\"";
+}
+
+void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension)
+{
+    if (const std::string problem = ExtensionProblem(file, extension); !problem.empty())
     {
-        throw InputError(kCommandLine, flag, "expected a " + extension + " file, found \"" + file + "\"");
+        throw InputError(kCommandLine, flag, problem);
     }
 }
 

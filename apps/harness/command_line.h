@@ -9,8 +9,10 @@ namespace cfx
 /// What InputError names as the file of a command-line problem.
 inline constexpr const char* kCommandLine = "<command line>";
 
-/// Throws InputError (kCommandLine, `flag`) unless `file` (when not empty) ends in `extension` (".wav",
-/// compared in any case): an output is named after what is written to it.
+/// Why `file` (when not empty) cannot be an output of `extension` (".wav", compared in any case): an output
+/// is named after what is written to it. Empty when it can.
+std::string ExtensionProblem(const std::string& file, const std::string& extension);
+/// Throws InputError (kCommandLine, `flag`) with the ExtensionProblem of `file`, if any.
 void CheckExtension(const std::string& flag, const std::string& file, const std::string& extension);
 
 /// Throws InputError (kCommandLine, `flag`) naming `file` when OutputFileProblem (contactfx/files) refuses

@@ -191,6 +191,15 @@ TEST(CliOutputs, EveryProblemIsReportedBeforeTheSimulationStarts)
     ExpectError(RunCli("demo --seconds 86400 --stats " + (dir / "a.json").string() + " --events " +
                        (dir / "a.json").string()),
                 {"a.json", "--events", "also the output of --stats"}, "one file twice");
+    // Wrong extensions are among the problems, not reported one at a time before the others.
+    const std::string wav = (dir / "x.wav").string();
+    const std::string png = (dir / "ev.png").string();
+    ExpectError(RunCli("run --scene grinder --seconds 3600 --stats /dev/full --plot " + wav + " --audio " +
+                       png + " --events " + (dir / "missing" / "e.jsonl").string()),
+                {"<command line>: --plot: expected a .png file, found \"" + wav + "\"",
+                 "<command line>: --audio: expected a .wav file, found \"" + png + "\"",
+                 "/dev/full: --stats: is a device", "--events: folder"},
+                "four problems");
     EXPECT_TRUE(FilesIn(dir).empty()) << Join(FilesIn(dir));
 }
 
