@@ -98,14 +98,15 @@ struct ParticleHitGroup
 /// How a particle system uses the machine.
 struct ParticleSystemOptions
 {
-    /// Threads for one step, the caller's included; 0: one per hardware thread (at most 8). The helper
+    /// Threads for one step, the caller's included; 0: one per hardware thread. At most 8: more are taken
+    /// as 8. The helper
     /// threads a full pool can use (capacity / minParticlesPerThread, at most threads - 1) are started
     /// with the system, so that no step ever starts one.
     unsigned threads = 0;
     /// A step in which particles collide is split only when every thread gets at least this many
     /// particles (below that, waking a thread costs more than it saves). A step in which none collides
     /// costs about a sixth as much per particle and needs eight times as many (where a split of it was
-    /// measured to pay). >= 1.
+    /// measured to pay). 0 is taken as 1.
     std::uint32_t minParticlesPerThread = 2048;
     /// Checks every pool particle after every step against the world's own fixtures (see
     /// ParticleCounters::stepsInside and ::crossings). Costs a world query per particle and step: for
