@@ -19,6 +19,27 @@ enum class Ground
     chain05m,
 };
 
+// A static chain along y = 0 from x = -halfWidth to halfWidth, of segments `segment` m long.
+b2Body* MakeChainGround(TestWorld& scene, float segment, float halfWidth)
+{
+    b2BodyDef def;
+    b2Body* body = scene.world->CreateBody(&def);
+    std::vector<b2Vec2> points;
+    const int count = static_cast<int>(std::lround(2.0f * halfWidth / segment));
+    for (int i = 0; i <= count; ++i)
+    {
+        points.emplace_back(halfWidth - segment * static_cast<float>(i), 0.0f); // right to left: front up
+    }
+    b2ChainShape chain;
+    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(halfWidth + 1.0f, 0.0f),
+                      b2Vec2(-halfWidth - 1.0f, 0.0f));
+    b2FixtureDef fixture;
+    fixture.shape = &chain;
+    fixture.friction = 0.8f;
+    body->CreateFixture(&fixture);
+    return body;
+}
+
 // A static concrete ground whose top is y = 0, from x = -60 to 60.
 b2Body* MakeGround(TestWorld& scene, Ground ground)
 {
@@ -26,23 +47,7 @@ b2Body* MakeGround(TestWorld& scene, Ground ground)
     {
         return scene.CreateGround(0.8f, 60.0f);
     }
-    b2BodyDef def;
-    b2Body* body = scene.world->CreateBody(&def);
-    const float segment = ground == Ground::chain2m ? 2.0f : 0.5f;
-    std::vector<b2Vec2> points;
-    const int count = static_cast<int>(std::lround(120.0f / segment));
-    for (int i = 0; i <= count; ++i)
-    {
-        points.emplace_back(60.0f - segment * static_cast<float>(i), 0.0f); // right to left: front up
-    }
-    b2ChainShape chain;
-    chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(61.0f, 0.0f),
-                      b2Vec2(-61.0f, 0.0f));
-    b2FixtureDef fixture;
-    fixture.shape = &chain;
-    fixture.friction = 0.8f;
-    body->CreateFixture(&fixture);
-    return body;
+    return MakeChainGround(scene, ground == Ground::chain2m ? 2.0f : 0.5f, 60.0f);
 }
 
 struct SlideResult
@@ -223,20 +228,7 @@ TEST(EmissionTessellation, ACircleRollingAlongAChainIsOneScrapeEitherWay)
         for (const float hz : {30.0f, 60.0f, 120.0f})
         {
             TestWorld scene;
-            b2BodyDef ground;
-            b2Body* floor = scene.world->CreateBody(&ground);
-            std::vector<b2Vec2> points;
-            for (int i = 0; i <= 2000; ++i)
-            {
-                points.emplace_back(100.0f - 0.1f * static_cast<float>(i), 0.0f); // right to left: front up
-            }
-            b2ChainShape chain;
-            chain.CreateChain(points.data(), static_cast<int>(points.size()), b2Vec2(101.0f, 0.0f),
-                              b2Vec2(-101.0f, 0.0f));
-            b2FixtureDef fixture;
-            fixture.shape = &chain;
-            fixture.friction = 0.8f;
-            floor->CreateFixture(&fixture);
+            b2Body* floor = MakeChainGround(scene, 0.1f, 100.0f);
             b2Body* disc = scene.CreateCircle(b2Vec2(0.1f, 0.3f), 0.3f, 0.6f);
             disc->SetFixedRotation(true);
             Effects& fx = scene.Attach(DefaultPreset());
