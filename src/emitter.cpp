@@ -47,20 +47,35 @@ b2Vec2 FootprintVelocity(const b2Fixture& other, b2Vec2 velocityAtPoint)
 }
 
 // How far along the surface a start is looked for, each way (m): a metre, or the larger side of the other
-// fixture's box and a tenth of a metre when that is more. From one end of a body's footprint the side the
-// particles leave to may be the body's whole length away (a block sliding on its front corner leaves its
-// sparks behind its rear one), and the gap between a large convex body and the surface opens slowly (a 7.7 m
-// wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact): its dirt starts at its rim instead of
-// being rejected.
-float SearchDistance(const b2Fixture& other, int otherChild)
+// body's box and a tenth of a metre when that is more, at most kMost. From one end of a body's footprint the
+// side the particles leave to may be the body's whole length away (a block sliding on its front corner leaves
+// its sparks behind its rear one), whatever fixtures it is made of, and the gap between a large convex body
+// and the surface opens slowly (a 7.7 m wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact):
+// its dirt starts at its rim instead of being rejected. The box is of the body's first kMaxChildren
+// children (fixtures, chain segments); one beyond that is as far as kMost anyway.
+float SearchDistance(const b2Body& other)
 {
     constexpr float kLeast = 1.0f;
     constexpr float kBeyond = 0.1f;
-    b2AABB box;
-    other.GetShape()->ComputeAABB(&box, other.GetBody()->GetTransform(), otherChild);
+    constexpr float kMost = 16.0f;
+    constexpr int kMaxChildren = 64;
+    const float inf = std::numeric_limits<float>::infinity();
+    b2AABB box{b2Vec2(inf, inf), b2Vec2(-inf, -inf)};
+    int children = 0;
+    for (const b2Fixture* fixture = other.GetFixtureList(); fixture != nullptr && children < kMaxChildren;
+         fixture = fixture->GetNext())
+    {
+        const b2Shape& shape = *fixture->GetShape();
+        for (int child = 0; child < shape.GetChildCount() && children < kMaxChildren; ++child, ++children)
+        {
+            b2AABB part;
+            shape.ComputeAABB(&part, other.GetTransform(), child);
+            box.Combine(part);
+        }
+    }
     const b2Vec2 extent = box.upperBound - box.lowerBound;
     const float across = std::max(extent.x, extent.y) + kBeyond;
-    return std::isfinite(across) ? std::max(kLeast, across) : kLeast;
+    return std::isfinite(across) ? std::clamp(across, kLeast, kMost) : kLeast;
 }
 
 // A particle count from a float that may be absurd (a huge rate), infinite or NaN: clamped to [0, limit]
@@ -524,8 +539,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     }
     else
     {
-        query.searchDistance = surfaceIsA ? SearchDistance(*fixtureB, contact->GetChildIndexB())
-                                          : SearchDistance(*fixtureA, contact->GetChildIndexA());
+        query.searchDistance = SearchDistance(*other.GetBody());
         start = FindSpawnPoint(context.world, query, &context.particleBodies);
     }
     if (!start.outside)
