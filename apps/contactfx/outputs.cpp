@@ -181,9 +181,14 @@ OutputFiles::Handle OutputFiles::AddScratch(const std::string& flag, const fs::p
     return handle;
 }
 
+void OutputFiles::Refuse(const std::string& flag, const fs::path& file, const std::string& message)
+{
+    m_refused.push_back(Diagnostic{file.string(), flag, message});
+}
+
 void OutputFiles::Prepare()
 {
-    std::vector<Diagnostic> problems;
+    std::vector<Diagnostic> problems = m_refused;
     auto refuse = [&](const Output& output, const std::string& message) {
         problems.push_back(Diagnostic{output.target.string(), output.flag, message});
     };

@@ -20,6 +20,8 @@
 // pre-existing files are untouched. SIGINT, SIGTERM and SIGHUP remove the temporary files too.
 #pragma once
 
+#include "contactfx/error.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -49,6 +51,10 @@ public:
     /// Registers `file`, given by option `flag` ("--stats"). Nothing is checked until Prepare(). With
     /// `extension` (".png"), Prepare() also refuses a file not named so (ExtensionProblem).
     Handle Add(const std::string& flag, const std::filesystem::path& file, const std::string& extension = "");
+
+    /// A problem with `file` (option `flag`) found by the command itself: Prepare() reports it first, with
+    /// the problems it finds.
+    void Refuse(const std::string& flag, const std::filesystem::path& file, const std::string& message);
 
     /// Registers a scratch file for `flag`: a temporary file beside `file` (another output's target),
     /// created by Prepare() like the others and always removed, never renamed into place (the audio of a
@@ -105,6 +111,7 @@ private:
 
     std::vector<std::filesystem::path> m_inputs;
     std::vector<Output> m_outputs;
+    std::vector<Diagnostic> m_refused; ///< Refuse()'s problems
     bool m_prepared = false;
     bool m_committed = false;
 };

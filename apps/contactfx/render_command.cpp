@@ -80,6 +80,8 @@ DebugLayers SelectedDebugLayers(const RenderOptions& options, float stepTime)
 }
 
 constexpr int kMaxSide = 8192;
+// A GIF frame's delay is a whole number of hundredths of a second, and players show a delay below 2 as 10.
+constexpr double kMaxGifFps = 50.0;
 
 [[noreturn]] void Refuse(const std::string& flag, const std::string& message)
 {
@@ -89,16 +91,6 @@ constexpr int kMaxSide = 8192;
 render::OutputKind CheckRenderOptions(const RenderOptions& options)
 {
     CheckRunOptions(options.run);
-    if (options.width < 2 || options.width > kMaxSide)
-    {
-        Refuse("--width",
-               "expected a whole number of pixels in [2, 8192], found " + std::to_string(options.width));
-    }
-    if (options.height < 2 || options.height > kMaxSide)
-    {
-        Refuse("--height",
-               "expected a whole number of pixels in [2, 8192], found " + std::to_string(options.height));
-    }
     if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 240.0)
     {
         Refuse("--fps", "expected a number in (0, 240], found " + NumberText(options.fps));
@@ -107,16 +99,15 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
     {
         Refuse("--view", "expected metres in (0, 1e6], found " + NumberText(options.view));
     }
-    // What the target is comes before what its name says (`--out /dev/full` is a device), and a
-    // sequence's folder is checked here once, not once per frame.
-    if (const std::string problem = OutputFileProblem(options.out); !problem.empty())
-    {
-        throw InputError(options.out, "--out", problem);
-    }
-    render::OutputKind kind;
+    // What the target is comes before what its name says (`--out /dev/full` is a device): a target that
+    // cannot be written is reported with the other outputs' problems (Render), and its name is not read.
+    render::OutputKind kind = render::OutputKind::png;
     try
     {
-        kind = render::ClassifyOutput(options.out);
+        if (OutputFileProblem(options.out).empty())
+        {
+            kind = render::ClassifyOutput(options.out);
+        }
     }
     catch (const std::invalid_argument& error)
     {
@@ -132,6 +123,12 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
         {
             Refuse("--time", "only for one frame (--out FILE.png); a sequence or video covers --seconds");
         }
+    }
+    if (kind == render::OutputKind::gif && options.fps > kMaxGifFps)
+    {
+        Refuse("--fps", "a .gif plays at most 50 frames a second (its frame delays are whole hundredths of a "
+                        "second, and players slow shorter ones down), found " +
+                            NumberText(options.fps));
     }
     if (kind == render::OutputKind::mp4 && (options.width % 2 != 0 || options.height % 2 != 0))
     {
@@ -177,7 +174,11 @@ int Render(RenderOptions options)
     OutputFiles outputs;
     AddScenarioInputs(outputs, options.run, scenario);
     std::vector<OutputFiles::Handle> pictures; // one per PNG frame; one video
-    if (kind == render::OutputKind::pngSequence)
+    if (const std::string problem = OutputFileProblem(options.out); !problem.empty())
+    {
+        outputs.Refuse("--out", options.out, problem); // once, not once per frame of a sequence
+    }
+    else if (kind == render::OutputKind::pngSequence)
     {
         for (long long k = 0; k < frames; ++k)
         {
@@ -351,10 +352,10 @@ void RegisterRenderCommand(CLI::App& app, int& result)
     render->add_option("--time", options->time, "Time of the one frame of a .png, s (default: --seconds)")
         ->check(DecimalNumber());
     render->add_option("--width", options->width, "Image width, px")
-        ->transform(DecimalWholeNumber())
+        ->transform(WholeNumberIn(2, kMaxSide))
         ->capture_default_str();
     render->add_option("--height", options->height, "Image height, px")
-        ->transform(DecimalWholeNumber())
+        ->transform(WholeNumberIn(2, kMaxSide))
         ->capture_default_str();
     render->add_option("--fps", options->fps, "Frames per second of a sequence or video")
         ->check(DecimalNumber())

@@ -157,23 +157,6 @@ CLI::Validator WholeNumberIn(long long lowest, long long highest)
         "INT in [" + std::to_string(lowest) + " - " + std::to_string(highest) + "]");
 }
 
-const CLI::Validator& DecimalWholeNumber()
-{
-    static const CLI::Validator check(
-        [](std::string& text)
-        {
-            const std::optional<long long> value = ParseDecimal(text);
-            if (!value)
-            {
-                return "expected a whole number, found \"" + text + "\"";
-            }
-            text = std::to_string(*value);
-            return std::string();
-        },
-        "");
-    return check;
-}
-
 const CLI::Validator& DecimalNumber()
 {
     static const CLI::Validator check(

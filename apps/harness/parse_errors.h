@@ -29,10 +29,6 @@ const CLI::Validator& NamesAFile();
 /// 10000, found \"10001\"". The help shows the range after the type ("UINT:INT in [1 - 10000]").
 CLI::Validator WholeNumberIn(long long lowest, long long highest);
 
-/// The same reading without a range (give it to `transform`), for whole-number options whose range the
-/// command checks itself: "010" is 10, "0x10" is refused ("expected a whole number, found \"0x10\"").
-const CLI::Validator& DecimalWholeNumber();
-
 /// The check of a number option: refuses hex ("0x10", which CLI11 alone reads as 16) while parsing; the
 /// command checks the range (and NaN) itself.
 const CLI::Validator& DecimalNumber();

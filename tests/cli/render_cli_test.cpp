@@ -71,7 +71,8 @@ TEST(CliRender, OneFrameAtATimeIsAPngOfTheAskedSize)
     EXPECT_EQ(decimal->second, 12u);
     const CliResult hex = RunCli("render --demo --time 0.5 --width 0x100 --height 32 --out " + out.string());
     EXPECT_EQ(hex.exitCode, 1);
-    EXPECT_NE(hex.output.find("--width: expected a whole number, found \"0x100\""), std::string::npos)
+    EXPECT_NE(hex.output.find("--width: expected a whole number from 2 to 8192, found \"0x100\""),
+              std::string::npos)
         << hex.output;
 }
 
@@ -242,6 +243,38 @@ TEST(CliRender, ADeviceIsRefusedAsADevice)
         << result.output;
 }
 
+// A target --out cannot be written to is one of the problems of the outputs, all reported at once.
+TEST(CliRender, ABadOutIsReportedWithTheOtherOutputsProblems)
+{
+    const std::filesystem::path dir = ScratchDir("render_bad_out");
+    for (const std::string& out : {(dir / "nodir" / "a.png").string(), (dir / "nodir" / "f_%d.png").string()})
+    {
+        const std::string stats = (dir / "nodir2" / "s.json").string();
+        const CliResult result =
+            RunCli("render --demo --seconds 0.1" + kTiny + "--out " + out + " --stats " + stats);
+        EXPECT_EQ(result.exitCode, 1) << result.output;
+        EXPECT_EQ(LineCount(result.output), 2u) << result.output;
+        EXPECT_NE(result.output.find(out + ": --out: folder"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find(stats + ": --stats: folder"), std::string::npos) << result.output;
+    }
+    EXPECT_TRUE(FilesIn(dir).empty());
+}
+
+// A GIF's frame delays are whole hundredths of a second, 2 at least as players show them: at most 50 fps.
+TEST(CliRender, AGifFasterThanFiftyFramesASecondIsRefused)
+{
+    const std::filesystem::path dir = ScratchDir("render_gif_fps");
+    const CliResult result =
+        RunCli("render --demo --seconds 0.5 --fps 60" + kTiny + "--out " + (dir / "v.gif").string());
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("contactfx: error: <command line>: --fps: a .gif plays at most 50 frames a "
+                                 "second"),
+              std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("found 60\n"), std::string::npos) << result.output;
+    EXPECT_TRUE(FilesIn(dir).empty());
+}
+
 // A rejected number is shown as given (shortest round trip), never rounded into its range, and
 // nothing follows it on its line.
 TEST(CliRender, RangeErrorsShowTheValueAsGiven)
@@ -252,6 +285,9 @@ TEST(CliRender, RangeErrorsShowTheValueAsGiven)
     const std::pair<std::string, std::string> cases[] = {
         {"--fps 240.0000001" + sequence, "--fps: expected a number in (0, 240], found 240.0000001\n"},
         {"--view -5" + png, "--view: expected metres in (0, 1e6], found -5\n"},
+        {"--width 99999999999" + png,
+         "--width: expected a whole number from 2 to 8192, found \"99999999999\"\n"},
+        {"--height 10.5" + png, "--height: expected a whole number from 2 to 8192, found \"10.5\"\n"},
         {"--time nan" + png, "--time: expected a number in [0, 86400], found nan\n"},
         {"--seconds 86400.0000001" + png,
          "--seconds: expected a number in (0, 86400], found 86400.0000001\n"},
