@@ -29,10 +29,6 @@ namespace cfx::testbed
 namespace
 {
 
-// Without interaction only the last frames are drawn (a couple, so that ImGui's layout settles); the
-// ones before are simulated only, one step each, as when drawn.
-constexpr int kDrawnFrames = 3;
-
 // Interactive runs keep to the simulation's own rate (1/dt steps per second) whatever the display's
 // frame rate; after a stall they drop time instead of racing to catch up.
 class Pacer
@@ -308,9 +304,12 @@ int RunTestbed(const Options& options)
     using Clock = std::chrono::steady_clock;
     Clock::time_point last = Clock::now();
     Pacer pacer;
-    for (int frame = 1; headless ? frame <= options.frames : !window.ShouldClose(); ++frame)
+    // Without interaction only the last frames are drawn, so that ImGui's layout settles (HeadlessFramePlan).
+    const int headlessFrames = headless ? HeadlessFrameCount(options.frames) : 0;
+    for (int frame = 1; headless ? frame <= headlessFrames : !window.ShouldClose(); ++frame)
     {
-        if (headless && frame <= options.frames - kDrawnFrames)
+        const HeadlessFrame plan = headless ? HeadlessFramePlan(frame, options.frames) : HeadlessFrame{};
+        if (headless && !plan.draw)
         {
             session.Advance(); // nobody watches: simulate only
             panels.times.Record(session.Sim().LastStepTimes());
@@ -323,7 +322,8 @@ int RunTestbed(const Options& options)
         panels.frameMs = static_cast<float>(elapsed * 1000.0);
         last = now;
         const int steps =
-            headless || session.stepOnce
+            headless ? (plan.step ? 1 : 0)
+            : session.stepOnce
                 ? 1
                 : pacer.StepsDue(elapsed, static_cast<double>(session.Sim().Dt()), !session.paused);
         for (int i = 0; i < steps; ++i)
@@ -352,7 +352,7 @@ int RunTestbed(const Options& options)
             DrawPanels(session, panels, width, height, kPanelWidth);
         }
         window.RenderUi();
-        if (headless && frame == options.frames && !options.screenshot.empty())
+        if (headless && frame == headlessFrames && !options.screenshot.empty())
         {
             SaveScreenshot(width, height, options.screenshot);
         }

@@ -4,6 +4,7 @@
 #include "harness/command_line.h"
 #include "harness/scenes.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -33,6 +34,21 @@ void CheckNotTheEffectsFile(const Options& options)
 }
 
 } // namespace
+
+int HeadlessFrameCount(int frames)
+{
+    return std::max(frames, kHeadlessDrawnFrames);
+}
+
+HeadlessFrame HeadlessFramePlan(int frame, int frames)
+{
+    const int count = HeadlessFrameCount(frames);
+    const int layoutOnly = count - frames; // drawn, not stepped: the first ones
+    HeadlessFrame plan;
+    plan.draw = frame > count - kHeadlessDrawnFrames;
+    plan.step = frame > layoutOnly;
+    return plan;
+}
 
 void CheckOptions(const Options& options, bool framesGiven)
 {

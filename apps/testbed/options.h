@@ -31,4 +31,20 @@ struct Options
 /// given" here (explicitly empty ones are refused while parsing: harness/parse_errors.h, NamesAFile).
 void CheckOptions(const Options& options, bool framesGiven);
 
+/// Frames drawn at the end of a run with --frames, so that ImGui's layout settles (its tables size their
+/// columns from the frame before): the screenshot is of the last.
+inline constexpr int kHeadlessDrawnFrames = 3;
+
+/// What frame `frame` (1-based) of a run with --frames `frames` does. The run has
+/// max(frames, kHeadlessDrawnFrames) frames: the last kHeadlessDrawnFrames are drawn, the others only
+/// simulated; with fewer than kHeadlessDrawnFrames frames asked for, the first drawn ones lay the panels out
+/// without stepping. So a run steps exactly `frames` times and its last frame is always the third drawn.
+struct HeadlessFrame
+{
+    bool draw = false;
+    bool step = false;
+};
+int HeadlessFrameCount(int frames);
+HeadlessFrame HeadlessFramePlan(int frame, int frames);
+
 } // namespace cfx::testbed

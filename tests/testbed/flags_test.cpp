@@ -3,6 +3,7 @@
 // the same, to show that a run which could draw leaves its effects file alone).
 #include "contactfx/version.h"
 #include "harness/command_line.h"
+#include "options.h"
 #include "testbed/testbed_support.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +27,31 @@ void ExpectRefused(const CliResult& result, const std::vector<std::string>& expe
 }
 
 } // namespace
+
+// However few frames are asked for, the picture is the third drawn frame (ImGui sizes a table's columns
+// from the frame before: after one drawn frame the statistics tables were collapsed), and the run steps
+// exactly as many times as frames were asked for.
+TEST(TestbedFrames, ARunDrawsItsLastThreeFramesAndStepsOncePerFrameAskedFor)
+{
+    for (const int frames : {1, 2, 3, 4, 620})
+    {
+        const int count = testbed::HeadlessFrameCount(frames);
+        int drawn = 0;
+        int steps = 0;
+        for (int frame = 1; frame <= count; ++frame)
+        {
+            const testbed::HeadlessFrame plan = testbed::HeadlessFramePlan(frame, frames);
+            drawn += plan.draw ? 1 : 0;
+            steps += plan.step ? 1 : 0;
+            EXPECT_TRUE(plan.draw || plan.step) << frames << " frames, frame " << frame;
+        }
+        EXPECT_EQ(count, std::max(frames, 3)) << frames;
+        EXPECT_EQ(drawn, 3) << frames;
+        EXPECT_EQ(steps, frames) << frames;
+        EXPECT_TRUE(testbed::HeadlessFramePlan(count, frames).draw) << frames;
+        EXPECT_TRUE(testbed::HeadlessFramePlan(count, frames).step) << frames;
+    }
+}
 
 TEST(TestbedFlags, VersionPrintsTheVersionOfTheHeaders)
 {
