@@ -352,8 +352,7 @@ const std::array kBudgetFields{
              .member = &B::capacity,
              .range = {1.0f, 4.0e6f},
              .doc = "hard cap on live particles; one step spawns at most this many, and what its emission "
-                    "owes beyond "
-                    "that is not spawned (`spawn_over_capacity`)",
+                    "owes beyond that is not spawned (`spawn_over_capacity`)",
              .step = 256.0f},
     Field<B>{.name = "recycle",
              .member = Choice<&B::recycle>(),

@@ -212,10 +212,11 @@ void OutputFiles::Prepare()
         {
             continue; // beside another output, whose checks cover its folder
         }
-        if (const std::string problem = ExtensionProblem(output.target.string(), output.extension);
-            !output.extension.empty() && !problem.empty())
+        const std::string misnamed =
+            output.extension.empty() ? "" : ExtensionProblem(output.target.string(), output.extension);
+        if (!misnamed.empty())
         {
-            problems.push_back(Diagnostic{kCommandLine, output.flag, problem});
+            problems.push_back(Diagnostic{kCommandLine, output.flag, misnamed});
             continue;
         }
         const std::string problem = OutputFileProblem(output.target);
