@@ -47,26 +47,22 @@ b2Vec2 FootprintVelocity(const b2Fixture& other, b2Vec2 velocityAtPoint)
 }
 
 // How far along the surface a start is looked for, each way (m): a metre, or the larger side of the other
-// body's box and a tenth of a metre when that is more, at most kMost. From one end of a body's footprint the
-// side the particles leave to may be the body's whole length away (a block sliding on its front corner leaves
-// its sparks behind its rear one), whatever fixtures it is made of, and the gap between a large convex body
-// and the surface opens slowly (a 7.7 m wheel lifts by a dirt particle's 0.1 m only 1.2 m from its contact):
-// its dirt starts at its rim instead of being rejected. The box is of the body's first kMaxChildren
-// children (fixtures, chain segments); one beyond that is as far as kMost anyway.
+// body's box (all its fixtures) and a tenth of a metre when that is more. From one end of a body's footprint
+// the side the particles leave to may be the body's whole length away (a block sliding on its front corner
+// leaves its sparks behind its rear one), whatever fixtures it is made of, and the gap between a large convex
+// body and the surface opens slowly (a 7.7 m wheel lifts by a dirt particle's 0.1 m only 1.2 m from its
+// contact): its dirt starts at its rim instead of being rejected. Costs a box per child of the body (a
+// dynamic body of many children is rare: grounds are the surface, not the other body).
 float SearchDistance(const b2Body& other)
 {
     constexpr float kLeast = 1.0f;
     constexpr float kBeyond = 0.1f;
-    constexpr float kMost = 16.0f;
-    constexpr int kMaxChildren = 64;
     const float inf = std::numeric_limits<float>::infinity();
     b2AABB box{b2Vec2(inf, inf), b2Vec2(-inf, -inf)};
-    int children = 0;
-    for (const b2Fixture* fixture = other.GetFixtureList(); fixture != nullptr && children < kMaxChildren;
-         fixture = fixture->GetNext())
+    for (const b2Fixture* fixture = other.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
     {
         const b2Shape& shape = *fixture->GetShape();
-        for (int child = 0; child < shape.GetChildCount() && children < kMaxChildren; ++child, ++children)
+        for (int child = 0; child < shape.GetChildCount(); ++child)
         {
             b2AABB part;
             shape.ComputeAABB(&part, other.GetTransform(), child);
@@ -75,7 +71,7 @@ float SearchDistance(const b2Body& other)
     }
     const b2Vec2 extent = box.upperBound - box.lowerBound;
     const float across = std::max(extent.x, extent.y) + kBeyond;
-    return std::isfinite(across) ? std::clamp(across, kLeast, kMost) : kLeast;
+    return std::isfinite(across) ? std::max(kLeast, across) : kLeast;
 }
 
 // A particle count from a float that may be absurd (a huge rate), infinite or NaN: clamped to [0, limit]

@@ -181,9 +181,9 @@ OutputFiles::Handle OutputFiles::AddScratch(const std::string& flag, const fs::p
     return handle;
 }
 
-void OutputFiles::Refuse(const std::string& flag, const fs::path& file, const std::string& message)
+void OutputFiles::Refuse(Diagnostic problem)
 {
-    m_refused.push_back(Diagnostic{file.string(), flag, message});
+    m_refused.push_back(std::move(problem));
 }
 
 void OutputFiles::Prepare()

@@ -52,9 +52,9 @@ public:
     /// `extension` (".png"), Prepare() also refuses a file not named so (ExtensionProblem).
     Handle Add(const std::string& flag, const std::filesystem::path& file, const std::string& extension = "");
 
-    /// A problem with `file` (option `flag`) found by the command itself: Prepare() reports it first, with
-    /// the problems it finds.
-    void Refuse(const std::string& flag, const std::filesystem::path& file, const std::string& message);
+    /// A problem of an output found by the command itself: Prepare() reports it first, with the problems it
+    /// finds.
+    void Refuse(Diagnostic problem);
 
     /// Registers a scratch file for `flag`: a temporary file beside `file` (another output's target),
     /// created by Prepare() like the others and always removed, never renamed into place (the audio of a

@@ -88,7 +88,15 @@ constexpr double kMaxGifFps = 50.0;
     throw InputError(kCommandLine, flag, message);
 }
 
-render::OutputKind CheckRenderOptions(const RenderOptions& options)
+// What --out names: the kind of picture, or the problem that keeps it from being written (reported with
+// the other outputs' problems, Render).
+struct RenderTarget
+{
+    render::OutputKind kind = render::OutputKind::png;
+    std::optional<Diagnostic> problem;
+};
+
+RenderTarget CheckRenderOptions(const RenderOptions& options)
 {
     CheckRunOptions(options.run);
     if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 240.0)
@@ -99,20 +107,25 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
     {
         Refuse("--view", "expected metres in (0, 1e6], found " + NumberText(options.view));
     }
-    // What the target is comes before what its name says (`--out /dev/full` is a device): a target that
-    // cannot be written is reported with the other outputs' problems (Render), and its name is not read.
-    render::OutputKind kind = render::OutputKind::png;
-    try
+    // What the target is comes before what its name says (`--out /dev/full` is a device). Either problem
+    // is reported with the other outputs' (Render), and the checks below take the target as one .png.
+    RenderTarget target;
+    if (const std::string problem = OutputFileProblem(options.out); !problem.empty())
     {
-        if (OutputFileProblem(options.out).empty())
+        target.problem = Diagnostic{options.out, "--out", problem};
+    }
+    else
+    {
+        try
         {
-            kind = render::ClassifyOutput(options.out);
+            target.kind = render::ClassifyOutput(options.out);
+        }
+        catch (const std::invalid_argument& error)
+        {
+            target.problem = Diagnostic{kCommandLine, "--out", error.what()};
         }
     }
-    catch (const std::invalid_argument& error)
-    {
-        Refuse("--out", error.what());
-    }
+    const render::OutputKind kind = target.kind;
     if (options.time)
     {
         if (!std::isfinite(*options.time) || *options.time < 0.0 || *options.time > 86400.0)
@@ -147,7 +160,7 @@ render::OutputKind CheckRenderOptions(const RenderOptions& options)
             throw std::runtime_error("ffprobe not found: install ffmpeg (with ffprobe) to write .mp4/.gif");
         }
     }
-    return kind;
+    return target;
 }
 
 int Render(RenderOptions options)
@@ -160,7 +173,8 @@ int Render(RenderOptions options)
         }
         options.run.sceneName = "tutorial";
     }
-    const render::OutputKind kind = CheckRenderOptions(options);
+    const RenderTarget target = CheckRenderOptions(options);
+    const render::OutputKind kind = target.kind;
     const Scenario scenario = SelectScenario(options.run);
     const SimulationDef& def = scenario.def;
 
@@ -174,9 +188,9 @@ int Render(RenderOptions options)
     OutputFiles outputs;
     AddScenarioInputs(outputs, options.run, scenario);
     std::vector<OutputFiles::Handle> pictures; // one per PNG frame; one video
-    if (const std::string problem = OutputFileProblem(options.out); !problem.empty())
+    if (target.problem)
     {
-        outputs.Refuse("--out", options.out, problem); // once, not once per frame of a sequence
+        outputs.Refuse(*target.problem); // once, not once per frame of a sequence
     }
     else if (kind == render::OutputKind::pngSequence)
     {

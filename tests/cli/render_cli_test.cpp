@@ -243,18 +243,24 @@ TEST(CliRender, ADeviceIsRefusedAsADevice)
         << result.output;
 }
 
-// A target --out cannot be written to is one of the problems of the outputs, all reported at once.
+// A target --out cannot be written to, or whose name is no kind of picture, is one of the problems of the
+// outputs, all reported at once.
 TEST(CliRender, ABadOutIsReportedWithTheOtherOutputsProblems)
 {
     const std::filesystem::path dir = ScratchDir("render_bad_out");
-    for (const std::string& out : {(dir / "nodir" / "a.png").string(), (dir / "nodir" / "f_%d.png").string()})
+    for (const std::string& out : {(dir / "nodir" / "a.png").string(), (dir / "nodir" / "f_%d.png").string(),
+                                   (dir / "o.avi").string(), (dir / "o").string()})
     {
         const std::string stats = (dir / "nodir2" / "s.json").string();
         const CliResult result =
             RunCli("render --demo --seconds 0.1" + kTiny + "--out " + out + " --stats " + stats);
         EXPECT_EQ(result.exitCode, 1) << result.output;
         EXPECT_EQ(LineCount(result.output), 2u) << result.output;
-        EXPECT_NE(result.output.find(out + ": --out: folder"), std::string::npos) << result.output;
+        const bool misnamed = out.find("nodir") == std::string::npos; // else its folder is missing
+        EXPECT_NE(result.output.find(misnamed ? "<command line>: --out: unknown extension"
+                                              : out + ": --out: folder"),
+                  std::string::npos)
+            << result.output;
         EXPECT_NE(result.output.find(stats + ": --stats: folder"), std::string::npos) << result.output;
     }
     EXPECT_TRUE(FilesIn(dir).empty());

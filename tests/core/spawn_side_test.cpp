@@ -53,10 +53,19 @@ TEST(SpawnSide, AWheelSpinningInPlaceThrowsFromWhereItsRimRisesAtEveryStepRate)
 
 TEST(SpawnSide, ASlidingBlockLeavesItsSparksBehindIt)
 {
-    // Whatever fixtures the block is made of: the walk passes under the whole body, not one fixture's length
-    // (a block of two 0.5 m fixtures started a third of its sparks ahead of its front face).
-    for (const int fixtures : {1, 2, 4, 8})
+    // Whatever fixtures the block is made of, however long: the walk passes under the whole body, not one
+    // fixture's length (a block of two 0.5 m fixtures started a third of its sparks ahead of its front face),
+    // nor a bounded part of it (a re-check found 20 m blocks, and blocks of 80 fixtures, starting them
+    // ahead).
+    struct Block
     {
+        float length; ///< m
+        int fixtures;
+    };
+    for (const Block shape : {Block{1.0f, 1}, Block{1.0f, 2}, Block{1.0f, 4}, Block{1.0f, 8}, Block{1.0f, 80},
+                              Block{20.0f, 1}, Block{20.0f, 100}})
+    {
+        const int fixtures = shape.fixtures;
         TestWorld scene;
         scene.particles.checkParticles = true;
         b2Body* ground = scene.CreateGround(0.5f);
@@ -64,11 +73,12 @@ TEST(SpawnSide, ASlidingBlockLeavesItsSparksBehindIt)
         def.type = b2_dynamicBody;
         def.position.Set(-10.0f, 0.25f);
         b2Body* block = scene.world->CreateBody(&def);
-        const float half = 0.5f / static_cast<float>(fixtures);
+        const float half = 0.5f * shape.length / static_cast<float>(fixtures);
         for (int k = 0; k < fixtures; ++k)
         {
             b2PolygonShape box;
-            box.SetAsBox(half, 0.25f, b2Vec2(-0.5f + half * static_cast<float>(2 * k + 1), 0.0f), 0.0f);
+            box.SetAsBox(half, 0.25f,
+                         b2Vec2(-0.5f * shape.length + half * static_cast<float>(2 * k + 1), 0.0f), 0.0f);
             b2FixtureDef fixture;
             fixture.shape = &box;
             fixture.density = 1.0f;
@@ -84,17 +94,17 @@ TEST(SpawnSide, ASlidingBlockLeavesItsSparksBehindIt)
         {
             scene.Step();
             // Sparks fly at half the slip: none has caught up with the block's rear face yet.
-            const float rear = block->GetPosition().x - 0.5f;
+            const float rear = block->GetPosition().x - 0.5f * shape.length;
             const ParticleView view = fx.Particles();
             for (std::uint32_t i = 0; i < view.count; ++i)
             {
                 EXPECT_LT(view.positionX[view.Slot(i)], rear)
-                    << fixtures << " fixtures, step " << step << ", particle " << i;
+                    << shape.length << " m, " << fixtures << " fixtures, step " << step << ", particle " << i;
             }
             seen += view.count;
         }
-        EXPECT_GT(seen, 200u) << fixtures << " fixtures";
-        EXPECT_EQ(fx.Stats().crushed, 0u) << fixtures << " fixtures";
+        EXPECT_GT(seen, 200u) << shape.length << " m, " << fixtures << " fixtures";
+        EXPECT_EQ(fx.Stats().crushed, 0u) << shape.length << " m, " << fixtures << " fixtures";
     }
 }
 
