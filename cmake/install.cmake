@@ -26,7 +26,8 @@ foreach(set contactfxTargets contactfxSceneTargets contactfxRenderTargets)
 endforeach()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/contactfxConfig.cmake.in
-  ${PROJECT_BINARY_DIR}/contactfxConfig.cmake INSTALL_DESTINATION ${CONTACTFX_INSTALL_CMAKEDIR})
+  ${PROJECT_BINARY_DIR}/contactfxConfig.cmake INSTALL_DESTINATION ${CONTACTFX_INSTALL_CMAKEDIR}
+  PATH_VARS CONTACTFX_INSTALL_SCENESDIR)
 # 0.x: only the same minor version is compatible; from 1.0 on, the same major version.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/contactfxConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)

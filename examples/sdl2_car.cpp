@@ -428,6 +428,7 @@ struct Options
 
 bool ParseOptions(int argc, char** argv, Options& options)
 {
+    bool sceneGiven = false;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
@@ -454,9 +455,10 @@ bool ParseOptions(int argc, char** argv, Options& options)
                 return false;
             }
         }
-        else if (!arg.empty() && arg[0] != '-')
+        else if (!arg.empty() && arg[0] != '-' && !sceneGiven) // one scene
         {
             options.scene = arg;
+            sceneGiven = true;
         }
         else
         {

@@ -22,6 +22,16 @@ cmake --build "$work/consumer-build" >/dev/null
 "$work/consumer-build/consumer" "$version"
 "$work/consumer-build/consumer_components" "$prefix/share/contactfx/scenes/grinder.json"
 "$work/consumer-build/consumer_render"
+# An unknown component is refused with a message naming it.
+mkdir -p "$work/unknown"
+printf 'cmake_minimum_required(VERSION 3.25)\nproject(u LANGUAGES CXX)\nfind_package(contactfx REQUIRED COMPONENTS bogus)\n' \
+  > "$work/unknown/CMakeLists.txt"
+if cmake -S "$work/unknown" -B "$work/unknown-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/unknown.log" 2>&1 ||
+  ! grep -q 'unknown component "bogus"' "$work/unknown.log"; then
+  echo "check-install: find_package(contactfx COMPONENTS bogus) did not fail naming the component" >&2
+  cat "$work/unknown.log" >&2
+  exit 1
+fi
 echo "find_package(contactfx): ok"
 
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
