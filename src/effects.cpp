@@ -6,6 +6,7 @@
 #include "emitter.h"
 #include "events.h"
 #include "fixture_materials.h"
+#include "step_check.h"
 #include "vector_text.h"
 
 #include <algorithm>
@@ -231,12 +232,7 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 void Effects::Step(float dt)
 {
     // Checked before anything changes (the particle system checks again, for its own users).
-    if (!(dt > 0.0f) || !std::isfinite(dt))
-    {
-        std::ostringstream found;
-        found << dt;
-        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + found.str());
-    }
+    detail::CheckStepTime(dt);
     if (!m_world.GetGravity().IsValid())
     {
         throw InputError("<api>", "gravity",

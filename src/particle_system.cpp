@@ -11,6 +11,7 @@
 #include "particles/workers.h"
 #include "particles/world_geometry.h"
 #include "pointer_map.h"
+#include "step_check.h"
 #include "vector_text.h"
 
 #include <algorithm>
@@ -481,12 +482,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
 
 void ParticleSystem::Step(float dt, b2Vec2 gravity)
 {
-    if (!(dt > 0.0f) || !std::isfinite(dt))
-    {
-        std::ostringstream found;
-        found << dt;
-        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + found.str());
-    }
+    detail::CheckStepTime(dt);
     if (!gravity.IsValid())
     {
         throw InputError("<api>", "gravity",

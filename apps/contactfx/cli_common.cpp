@@ -116,7 +116,7 @@ void CheckRunOptions(const RunOptions& options)
     {
         throw InputError(kCommandLine, "--seconds",
                          NumberText(options.seconds) + " s at --hz " + NumberText(options.hz) +
-                             " is less than half a step (" + NumberText(1.0 / options.hz) +
+                             " is less than half a step (" + NumberText(0.5 / options.hz) +
                              " s), so nothing would be simulated: give --seconds " +
                              NumberText(0.5 / options.hz) + " or more, or a higher --hz");
     }

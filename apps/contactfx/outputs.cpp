@@ -206,6 +206,7 @@ void OutputFiles::Prepare()
         }
     }
     std::map<std::string, const Output*> seen;
+    std::map<std::pair<dev_t, ino_t>, const Output*> seenIds;
     for (const Output& output : m_outputs)
     {
         if (output.scratch)
@@ -231,7 +232,8 @@ void OutputFiles::Prepare()
             input = &found->second;
         }
         struct stat info = {};
-        if (input == nullptr && ::stat(output.real.c_str(), &info) == 0)
+        const bool exists = ::stat(output.real.c_str(), &info) == 0;
+        if (input == nullptr && exists)
         {
             if (auto found = inputIds.find({info.st_dev, info.st_ino}); found != inputIds.end())
             {
@@ -243,11 +245,24 @@ void OutputFiles::Prepare()
             refuse(output, "is the input file " + Quoted(*input) + " of this command: not overwritten");
             continue;
         }
-        auto [other, inserted] = seen.emplace(output.real.string(), &output);
-        if (!inserted)
+        // The same file by path, or an existing one by identity (a hard link under another name).
+        const Output* other = nullptr;
+        if (auto [found, inserted] = seen.emplace(output.real.string(), &output); !inserted)
         {
-            refuse(output, "is also the output of " + other->second->flag + " (" +
-                               Quoted(other->second->target) + "): give each output its own file");
+            other = found->second;
+        }
+        else if (exists)
+        {
+            if (auto [same, added] = seenIds.emplace(std::make_pair(info.st_dev, info.st_ino), &output);
+                !added)
+            {
+                other = same->second;
+            }
+        }
+        if (other != nullptr)
+        {
+            refuse(output, "is also the output of " + other->flag + " (" + Quoted(other->target) +
+                               "): give each output its own file");
         }
     }
     if (!problems.empty())

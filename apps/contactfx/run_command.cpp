@@ -25,8 +25,8 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
     const Effects& effects = simulation.GetEffects();
     const EffectsConfig& config = effects.Config();
     const EffectsStats& stats = effects.Stats();
-    std::printf("%s: %s effects, %.0f Hz, %.2f s (%llu steps), seed %llu\n", what.c_str(),
-                config.name.empty() ? "custom" : config.name.c_str(), options.hz,
+    std::printf("%s: %s effects, %s Hz, %.2f s (%llu steps), seed %llu\n", what.c_str(),
+                config.name.empty() ? "custom" : config.name.c_str(), NumberText(options.hz).c_str(),
                 static_cast<double>(simulation.Time()), static_cast<unsigned long long>(stats.steps),
                 static_cast<unsigned long long>(options.seed));
     std::printf("  spawned:");

@@ -132,7 +132,8 @@ public:
     explicit SoundVoices(const EffectsConfig& config);
 
     /// One step, after Effects::Step(dt): `events` are that step's (Effects::Events()), read before any
-    /// fixture or body is destroyed (an event's body pair is found through its fixtures). dt in s, > 0.
+    /// fixture or body is destroyed (an event's body pair is found through its fixtures). dt in s, > 0:
+    /// InputError (file "<api>", field "dt") otherwise, and nothing changes.
     void Step(std::span<const EffectEvent> events, float dt);
 
     /// Stops every sounding voice now (the end of a run); Changes() then lists the stops.

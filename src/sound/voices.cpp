@@ -17,6 +17,7 @@
 // them.
 #include "contactfx/error.h"
 #include "contactfx/sound.h"
+#include "step_check.h"
 
 #include <algorithm>
 #include <box2d/b2_fixture.h>
@@ -207,7 +208,7 @@ const SoundRuleDef& SoundVoices::VoiceSound(const SoundVoice& voice) const
 }
 
 // An impact or particle hits event of `pair` at `loudness`: merged into the voice it starts or sounds within
-// the merge window, dropped inside the cooldown, else waiting to start a voice.
+// the merge window, dropped inside the cooldown or when silent, else waiting to start a voice.
 void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event)
 {
     const bool impact = pair.kind == VoiceKind::impact;
@@ -231,9 +232,9 @@ void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event)
     {
         ++m_stats.impactsCooling; // particle hits have no cooldown
     }
-    else
+    else if (loudness > 0.0f) // a silent event (a gain of 0) starts nothing
     {
-        pair.pending = std::max(loudness, 1.0e-6f);
+        pair.pending = loudness;
         // Particle hits have no id: they rank after impacts and scrapes among equals, in event order.
         pair.pendingId = impact ? event.id : m_hitsThisStep;
         pair.voice.approachSpeed = event.approachSpeed;
@@ -433,6 +434,7 @@ void SoundVoices::ApplyCap()
 
 void SoundVoices::Step(std::span<const EffectEvent> events, float dt)
 {
+    detail::CheckStepTime(dt); // before anything changes: a NaN time would stay in every later voice
     m_time += static_cast<double>(dt);
     m_changes.clear();
     m_claims.clear();

@@ -191,6 +191,15 @@ TEST(CliOutputs, EveryProblemIsReportedBeforeTheSimulationStarts)
     ExpectError(RunCli("demo --seconds 86400 --stats " + (dir / "a.json").string() + " --events " +
                        (dir / "a.json").string()),
                 {"a.json", "--events", "also the output of --stats"}, "one file twice");
+    // The same file under two names (a hard link) is one file twice too.
+    WriteTestFile(dir / "linked.json", "x\n");
+    fs::create_hard_link(dir / "linked.json", dir / "link.json");
+    ExpectError(RunCli("demo --seconds 86400 --stats " + (dir / "linked.json").string() + " --events " +
+                       (dir / "link.json").string()),
+                {"--events", "also the output of --stats"}, "one file under two names");
+    EXPECT_EQ(FileText(dir / "link.json"), "x\n");
+    fs::remove(dir / "linked.json");
+    fs::remove(dir / "link.json");
     // Wrong extensions are among the problems, not reported one at a time before the others.
     const std::string wav = (dir / "x.wav").string();
     const std::string png = (dir / "ev.png").string();

@@ -243,13 +243,23 @@ TEST(CliRun, RangeErrorsShowTheValueAsGiven)
 TEST(CliRun, SecondsThatMakeNoStepAreRefused)
 {
     const std::filesystem::path dir = ScratchDir("run_no_step");
-    ExpectRefused("run --scene grinder --hz 1 --seconds 0.1", dir / "z.json",
-                  {"--seconds: 0.1 s at --hz 1 is less than half a step", "give --seconds 0.5 or more"});
+    ExpectRefused(
+        "run --scene grinder --hz 1 --seconds 0.1", dir / "z.json",
+        {"--seconds: 0.1 s at --hz 1 is less than half a step (0.5 s)", "give --seconds 0.5 or more"});
     ExpectRefused("demo --hz 60 --seconds 0.008", dir / "z.json", {"--seconds: 0.008 s at --hz 60"});
     const CliResult one =
         RunCli("run --scene grinder --hz 1 --seconds 0.5 --stats " + (dir / "one.json").string());
     ASSERT_EQ(one.exitCode, 0) << one.output;
     EXPECT_EQ(nlohmann::json::parse(FileText(dir / "one.json"))["steps"], 1);
+}
+
+// The summary names the rate the run stepped at, as given (it printed 59.94 as 60).
+TEST(CliRun, TheSummaryNamesTheStepRateAsGiven)
+{
+    const CliResult result = RunCli("run --scene tutorial --seconds 1 --hz 59.94");
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("default effects, 59.94 Hz, 1.00 s (60 steps)"), std::string::npos)
+        << result.output;
 }
 
 } // namespace cfx::test

@@ -67,6 +67,22 @@ TEST(ParticleHitVoices, LoudnessFollowsCountAndMeanSpeedAndTheVoiceDecaysOverIts
     EXPECT_EQ(voices.Stats().particleHitVoices, 1u);
 }
 
+TEST(ParticleHitVoices, AGainOfZeroMakesThemSilentAndStartsNoVoice)
+{
+    // particleHitGain 0: loudness 1 - exp(0) = 0, so nothing sounds (214 voices of loudness 1e-6 started).
+    EventBench bench(2);
+    bench.config.sound.particleHitGain = 0.0f;
+    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
+    SoundVoices voices(bench.config);
+    for (int step = 0; step < 30; ++step)
+    {
+        const EffectEvent hits = Hits(bench, step % 2, dirt, 9, 2.5f);
+        voices.Step(std::span(&hits, 1), kDt);
+        EXPECT_TRUE(voices.Voices().empty()) << "step " << step;
+    }
+    EXPECT_EQ(voices.Stats().particleHitVoices, 0u);
+}
+
 TEST(ParticleHitVoices, AreOnePerTypeAndBodyAndMergeWithinTheWindow)
 {
     EventBench bench(2);

@@ -23,6 +23,34 @@ const SoundRuleDef kRule{}; // the defaults every rule of the default preset use
 
 } // namespace
 
+TEST(SoundVoices, AStepTimeThatIsNotAFiniteTimeAboveZeroIsRefusedAndChangesNothing)
+{
+    // Time is summed over the steps: one NaN made every later voice's time NaN, and a scrape voice sounded
+    // for ever; a negative step ran time backwards.
+    EventBench bench(1);
+    SoundVoices voices(bench.config);
+    voices.Step(std::vector<EffectEvent>{bench.Scrape(Type::scrapeBegan, 0, 1, 2.0f * kRule.scrapeStart)},
+                kDt);
+    ASSERT_EQ(voices.Voices().size(), 1u);
+    const double time = voices.Time();
+    for (const float dt : {0.0f, -0.0f, -1.0f, std::nanf(""), INFINITY})
+    {
+        try
+        {
+            voices.Step({}, dt);
+            ADD_FAILURE() << "dt " << dt << " was accepted";
+        }
+        catch (const InputError& error)
+        {
+            EXPECT_EQ(error.Diagnostics().front().path, "dt");
+            EXPECT_NE(std::string(error.what()).find("expected a finite step time > 0 s"), std::string::npos);
+        }
+        EXPECT_EQ(voices.Time(), time) << dt;
+    }
+    voices.Step(std::vector<EffectEvent>{bench.Scrape(Type::scrapeEnded, 0, 1, 0.0f)}, kDt);
+    EXPECT_EQ(voices.Time(), time + static_cast<double>(kDt));
+}
+
 TEST(SoundVoices, AFlickeringScrapeAboveTheContinueThresholdIsOneVoice)
 {
     EventBench bench(1);
