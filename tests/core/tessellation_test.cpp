@@ -284,6 +284,27 @@ TEST(EmissionBudget, AStepSpawnsAtMostTheCapacityAndCountsWhatItOwedBeyond)
     }
 }
 
+TEST(EmissionBudget, PerStepEmissionPastTheCapacityIsCountedToo)
+{
+    // The tutorial's per-contact emission, one particle per sample per step, on a chain of 0.5 m segments (a
+    // 1 m block spans two or three): with room for 1, every particle a step owes past the first is counted.
+    // Pool particles move no body, so the two runs slide alike and owe the same.
+    EffectsConfig config = DefaultPreset();
+    config.rules[0].emission = EmissionMode::perStep;
+    config.rules[0].burstPerSpeed = 0.0f;
+    const SlideSetup setup{.seconds = 1.0f, .speed = 8.0f, .hold = true};
+    EffectsConfig roomy = config;
+    roomy.budget.capacity = 1000;
+    EffectsConfig tight = config;
+    tight.budget.capacity = 1;
+    const SlideResult all = Slide(roomy, Ground::chain05m, setup);
+    const SlideResult capped = Slide(tight, Ground::chain05m, setup);
+    EXPECT_EQ(all.overCapacity, 0u);
+    EXPECT_GT(capped.overCapacity, 0u);
+    EXPECT_LE(capped.sparks, 60u) << "at most one a step";
+    EXPECT_EQ(capped.sparks + capped.overCapacity, all.sparks);
+}
+
 TEST(EmissionTessellation, SameSeedSameParticlesOnAChain)
 {
     std::vector<float> first;
