@@ -6,6 +6,7 @@
 #include "emitter.h"
 #include "events.h"
 #include "fixture_materials.h"
+#include "particle_system_access.h"
 #include "step_check.h"
 #include "vector_text.h"
 
@@ -100,11 +101,11 @@ public:
         // Box2D ended the fixture's contacts just before: their scrapes ended by destruction.
         m_tracker.MarkDestroyed(fixture);
         m_materials.Erase(fixture);
-        m_particles.ForgetBody(fixture->GetBody()); // nothing unless it is a particle's body
         if (forward != nullptr)
         {
-            forward->SayGoodbye(fixture);
+            forward->SayGoodbye(fixture); // before ForgetBody: to IsParticleBody it is still a particle's
         }
+        m_particles.ForgetBody(fixture->GetBody()); // nothing unless it is a particle's body
     }
 
 private:
@@ -147,6 +148,7 @@ struct Effects::Internals
     }
 
     WorldClaim claim;
+    bool notifying = false;           // the event listener is being handed this step's events
     b2ContactListener* worldListener; // the world's contact listener before Effects: put back if none is set
     FixtureMaterials materials;
     ContactTracker tracker;
@@ -220,6 +222,7 @@ void Effects::SetMaterial(b2Body* body, MaterialId material)
 
 void Effects::ForgetFixture(b2Fixture* fixture)
 {
+    CheckMaterialArguments(fixture, "fixture", MaterialId{});
     m_internals->tracker.ForgetFixture(fixture);
     m_internals->materials.Erase(fixture);
 }
@@ -243,10 +246,20 @@ void Effects::Step(float dt)
     detail::EventTracker& events = m_internals->events;
     tracker.Prune();
     events.BeginStep(tracker.Step(), dt, tracker.EndedPairs());
-    m_internals->emitter.Emit(m_world, m_config, tracker, events, m_particles, m_stats, dt);
-    // Everything recorded has been read. A contact that ends from here on (the particle step destroys
-    // bodies) is reported in the next step.
-    tracker.EndStep();
+    {
+        // The emission reads the tracker's contact lists, so the bodies of the particles its spawns
+        // recycle are destroyed after it (destroying a body ends its contacts).
+        struct RecycledBodies
+        {
+            ParticleSystem& particles;
+            ~RecycledBodies() { detail::ParticleSystemAccess::DestroyDeferredBodies(particles); }
+        } recycled{m_particles};
+        detail::ParticleSystemAccess::DeferBodyDestruction(m_particles);
+        m_internals->emitter.Emit(m_world, m_config, tracker, events, m_particles, m_stats, dt);
+        // Everything recorded has been read. A contact that ends from here on (the recycled bodies, and
+        // the particle step's) is reported in the next step.
+        tracker.EndStep();
+    }
     m_particles.Step(dt, m_world.GetGravity());
     events.ParticleHits(m_particles.Hits());
     m_stats.steps += 1;
@@ -272,18 +285,33 @@ void Effects::ShiftOrigin(b2Vec2 newOrigin)
 
 void Effects::EndScrapes()
 {
-    m_internals->events.EndAll(ScrapeEnd::stopped);
+    if (m_internals->notifying)
+    {
+        // Called by the event listener: the scrape ends follow the events being delivered, which the
+        // delivery loop then hands on too (each event once).
+        m_internals->events.EndAll(ScrapeEnd::stopped, detail::EventTracker::Keep::events);
+        return;
+    }
+    m_internals->events.EndAll(ScrapeEnd::stopped, detail::EventTracker::Keep::none);
     NotifyListener();
 }
 
 void Effects::NotifyListener()
 {
-    if (m_eventListener != nullptr)
+    if (m_eventListener == nullptr)
     {
-        for (const EffectEvent& event : m_internals->events.Events())
-        {
-            m_eventListener->OnEffectEvent(event);
-        }
+        return;
+    }
+    m_internals->notifying = true;
+    struct Done
+    {
+        bool& notifying;
+        ~Done() { notifying = false; }
+    } done{m_internals->notifying};
+    // By index: the listener may end the scrapes (EndScrapes), which appends to the events.
+    for (std::size_t i = 0; i < m_internals->events.Events().size(); ++i)
+    {
+        m_eventListener->OnEffectEvent(m_internals->events.Events()[i]);
     }
 }
 

@@ -10,8 +10,8 @@ EventTracker::EventTracker(const FixtureMaterials& materials, std::uint32_t pair
 {
     m_scrapes.reserve(pairs);
     // A step reports at most a scrape end and an impact per body pair, or an impact and a scrape event,
-    // then its particle hit groups.
-    m_events.reserve(std::size_t{2} * pairs + hitGroups);
+    // then its particle hit groups; and the event listener may end every scrape on top (EndAll).
+    m_events.reserve(std::size_t{3} * pairs + hitGroups);
 }
 
 void EventTracker::ParticleHits(std::span<const ParticleHitGroup> groups)
@@ -37,9 +37,13 @@ void EventTracker::ShiftOrigin(b2Vec2 newOrigin)
     }
 }
 
-void EventTracker::EndAll(ScrapeEnd reason)
+void EventTracker::EndAll(ScrapeEnd reason, Keep keep)
 {
-    m_events.clear(); // holds a step's scrape ends and more, so never grows here
+    if (keep == Keep::none)
+    {
+        m_events.clear();
+    }
+    const auto first = static_cast<std::ptrdiff_t>(m_events.size());
     for (ScrapeState& scrape : m_scrapes)
     {
         if (scrape.id != 0)
@@ -47,7 +51,7 @@ void EventTracker::EndAll(ScrapeEnd reason)
             End(scrape, reason, scrape.fixtureA, scrape.fixtureB);
         }
     }
-    std::sort(m_events.begin(), m_events.end(),
+    std::sort(m_events.begin() + first, m_events.end(),
               [](const EffectEvent& a, const EffectEvent& b) { return a.id < b.id; });
 }
 

@@ -104,9 +104,15 @@ public:
 
     /// Appends a particleHits event per group, in order (after the step's contact events).
     void ParticleHits(std::span<const ParticleHitGroup> groups);
-    /// Ends every open scrape with `reason`: the events become one scrapeEnded per open scrape, in id
-    /// order (stamped with the last step). Allocation-free.
-    void EndAll(ScrapeEnd reason);
+    /// What EndAll keeps of the events made so far.
+    enum class Keep : std::uint8_t
+    {
+        none,   ///< the events become the scrape ends
+        events, ///< the scrape ends follow them (EndScrapes called by the event listener)
+    };
+    /// Ends every open scrape with `reason`: one scrapeEnded per open scrape, in id order (stamped with the
+    /// last step), after the events `keep` keeps. Allocation-free.
+    void EndAll(ScrapeEnd reason, Keep keep);
 
     /// The world's origin moved to `newOrigin` (b2World::ShiftOrigin): the points the open scrapes last
     /// reported move by -newOrigin. The events already made stay as they were reported.

@@ -132,6 +132,12 @@ struct ParticleSystem::Impl
     std::uint64_t lastBuilds = 0;
     particles::Workers workers;
     std::array<std::vector<b2Body*>, kMaxThreads> dead; // reserved to capacity when body-backed
+    // While Effects emits (ParticleSystemAccess::DeferBodyDestruction), the bodies of the particles Spawn
+    // recycles wait here instead of being destroyed: destroying one ends its contacts, and Effects is
+    // reading the contact lists it would change. Reserved to capacity when body-backed (a step spawns at
+    // most that many).
+    bool deferDestruction = false;
+    std::vector<b2Body*> recycledBodies;
 
     // Particle hits, when recorded (maxHitGroups > 0 and a pool type collides; else all empty). A step's
     // run writes its hits at hits[begin, begin + its count) (logical indices: a run has at most one hit
@@ -184,9 +190,26 @@ struct ParticleSystem::Impl
     {
         if (anyBodyBacked && body[slot] != nullptr)
         {
-            DestroyOwnBody(body[slot]);
+            if (deferDestruction)
+            {
+                recycledBodies.push_back(body[slot]);
+            }
+            else
+            {
+                DestroyOwnBody(body[slot]);
+            }
             body[slot] = nullptr;
         }
+    }
+
+    void DestroyRecycledBodies()
+    {
+        deferDestruction = false;
+        for (b2Body* recycled : recycledBodies)
+        {
+            DestroyOwnBody(recycled);
+        }
+        recycledBodies.clear();
     }
 
     // Removes the particles whose bodies the application destroyed (ForgetBody), keeping the others in
@@ -387,6 +410,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     {
         impl.body.assign(m_capacity, nullptr);
         impl.bodySet.Reserve(m_capacity);
+        impl.recycledBodies.reserve(m_capacity);
         for (unsigned part = 0; part < impl.threads; ++part)
         {
             impl.dead[part].reserve(m_capacity);
@@ -410,6 +434,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
 
 ParticleSystem::~ParticleSystem()
 {
+    m_impl->DestroyRecycledBodies();
     m_count = m_impl->DropForgotten(m_count, m_capacity);
     for (std::uint32_t i = 0; i < m_count; ++i)
     {
@@ -498,6 +523,16 @@ void ParticleSystem::ForgetBody(const b2Body* body)
     {
         impl.forgotten += 1;
     }
+}
+
+void detail::ParticleSystemAccess::DeferBodyDestruction(ParticleSystem& system)
+{
+    system.m_impl->deferDestruction = true;
+}
+
+void detail::ParticleSystemAccess::DestroyDeferredBodies(ParticleSystem& system)
+{
+    system.m_impl->DestroyRecycledBodies();
 }
 
 void detail::ParticleSystemAccess::IntegrateWithoutCollision(ParticleSystem& system, float dt, b2Vec2 gravity)
@@ -728,7 +763,8 @@ std::size_t ParticleSystem::BytesPerSlot() const
     std::size_t bytes = kHotBytesPerSlot;
     if (impl.anyBodyBacked)
     {
-        bytes += sizeof(b2Body*) * (1 + impl.threads); // the body, and room in each run's dead list
+        // The body, and room in each run's dead list and in the recycled list.
+        bytes += sizeof(b2Body*) * (2 + impl.threads);
     }
     if (impl.policy == RecyclePolicy::lowestLife)
     {

@@ -13,6 +13,11 @@ struct ParticleSystemAccess
     /// A step without collision for pool particles: gravity, drag, motion and ageing over the same
     /// arrays. The reference that measures what collision costs (contactfx bench); effects never call it.
     static void IntegrateWithoutCollision(ParticleSystem& system, float dt, b2Vec2 gravity);
+    /// From here until DestroyDeferredBodies, the bodies of the body-backed particles Spawn recycles are
+    /// kept instead of destroyed (Effects reads the world's contacts meanwhile; destroying a body ends
+    /// its contacts). DestroyDeferredBodies destroys them, in the order they were recycled.
+    static void DeferBodyDestruction(ParticleSystem& system);
+    static void DestroyDeferredBodies(ParticleSystem& system);
 };
 
 /// Ignores the bodies of a particle system's body-backed particles in spawn point tests.

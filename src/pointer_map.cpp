@@ -26,7 +26,7 @@ void PointerMap::Set(const void* key, std::uint64_t value)
 
 bool PointerMap::Erase(const void* key)
 {
-    if (m_count == 0)
+    if (m_count == 0 || key == nullptr)
     {
         return false;
     }

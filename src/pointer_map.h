@@ -17,10 +17,10 @@ namespace cfx::detail
 class PointerMap
 {
 public:
-    /// The value for `key`, or nullptr. `key` must not be null.
+    /// The value for `key`, or nullptr (always for a null key: null marks the empty slots).
     const std::uint64_t* Find(const void* key) const
     {
-        if (m_count == 0)
+        if (m_count == 0 || key == nullptr)
         {
             return nullptr;
         }
@@ -44,7 +44,7 @@ public:
     /// Inserts or overwrites. `key` must not be null.
     void Set(const void* key, std::uint64_t value);
 
-    /// Removes `key` if present; returns whether it was.
+    /// Removes `key` if present; returns whether it was (never for a null key).
     bool Erase(const void* key);
 
     std::size_t Size() const { return m_count; }

@@ -223,6 +223,36 @@ bool ProjectOntoSurface(const SpawnQuery& query, b2Vec2 point, float reach, b2Ve
     return true;
 }
 
+// Whether the straight way from one start to the next crosses a solid fixture other than the surface's
+// (the walk hugs that one) and the passable body's (the walk goes under it). Projected onto the surface,
+// a start can land on a face that is hidden under another fixture (a box's side under a slab laid over it):
+// the start is free, but not reachable from the contact.
+class WayBlocked final : public b2RayCastCallback
+{
+public:
+    WayBlocked(const b2Fixture* surface, const b2Body* passable, const BodyFilter* ignore)
+        : m_surface(surface), m_passable(passable), m_ignore(ignore)
+    {
+    }
+
+    float ReportFixture(b2Fixture* fixture, const b2Vec2&, const b2Vec2&, float) override
+    {
+        if (fixture == m_surface || fixture->GetBody() == m_passable || !IsSolidFor(*fixture, m_ignore))
+        {
+            return -1.0f; // ignore and go on
+        }
+        blocked = true;
+        return 0.0f; // one is enough
+    }
+
+    bool blocked = false;
+
+private:
+    const b2Fixture* m_surface;
+    const b2Body* m_passable;
+    const BodyFilter* m_ignore;
+};
+
 // What a start tried along the surface is.
 enum class Start : std::uint8_t
 {
@@ -338,6 +368,11 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
     float step = std::max(clearance, 0.01f);
     float reach = std::max(4.0f * clearance, 0.25f);
 
+    // The start each one is walked to from: the one at the contact (offset 0), then the last one tried.
+    const b2Vec2 lifted = query.point + clearance * query.normal;
+    b2Vec2 atContact = lifted;
+    b2Vec2 previous = lifted;
+    float previousSide = 0.0f;
     SpawnPoint found = Walk(firstSide, step, query.searchDistance,
                             [&](float offset, SpawnPoint& start)
                             {
@@ -352,11 +387,32 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
                                 }
                                 start.position = surfacePoint + clearance * surfaceNormal;
                                 start.normal = surfaceNormal;
+                                const float side = offset > 0.0f ? 1.0f : offset < 0.0f ? -1.0f : 0.0f;
+                                if (side == 0.0f)
+                                {
+                                    atContact = start.position;
+                                }
+                                else if (side != previousSide)
+                                {
+                                    previous = atContact; // the other side is walked from the contact too
+                                }
+                                previousSide = side;
+                                const b2Vec2 from = previous;
+                                previous = start.position;
+                                if (b2DistanceSquared(from, start.position) > 0.0f)
+                                {
+                                    WayBlocked way(query.surface, query.otherBody, ignore);
+                                    world.RayCast(&way, from, start.position);
+                                    if (way.blocked)
+                                    {
+                                        return Start::closed;
+                                    }
+                                }
                                 return StartAt(world, start.position, query.radius, ignore, query.otherBody);
                             });
     if (!found.outside)
     {
-        found.position = query.point + clearance * query.normal;
+        found.position = lifted;
         found.normal = query.normal;
     }
     return found;

@@ -82,13 +82,14 @@ public:
     void SetMaterial(b2Fixture* fixture, MaterialId material);
     /// Gives every fixture of `body` the material; throws as above (field "body" for a null body).
     void SetMaterial(b2Body* body, MaterialId material);
-    /// The fixture's material, or an invalid id.
+    /// The fixture's material, or an invalid id (also for a null fixture).
     MaterialId Material(const b2Fixture* fixture) const;
     /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
     /// material and its contacts. Fixtures destroyed with their body are handled automatically. Without
     /// it, a later fixture at the freed address does not inherit the material when it differs in body,
     /// shape or geometry (counted in EffectsStats::staleMaterials); one re-created identically on the same
-    /// body cannot be told apart and keeps it (docs/api.md, "Destroying fixtures").
+    /// body cannot be told apart and keeps it (docs/api.md, "Destroying fixtures"). Throws InputError
+    /// (file "<api>", field "fixture") for a null fixture; nothing changes then.
     void ForgetFixture(b2Fixture* fixture);
 
     void SetContactListener(b2ContactListener* listener);

@@ -88,7 +88,8 @@ struct EffectEvent
 };
 
 /// Receives every event of a step, in order, at the end of Effects::Step. It may read the world but
-/// must not step it or destroy bodies.
+/// must not step it or destroy bodies. It may call Effects::EndScrapes: the scrape ends then follow the
+/// step's events, in Events() too, and it hears them after the rest, each event once.
 class EffectEventListener
 {
 public:

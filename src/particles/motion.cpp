@@ -77,10 +77,15 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // body's surface). The push is a motion like any other: it is swept through the static geometry, sliding
 // along what it meets (twice at most, the rest of the push is dropped), so it never carries the particle
 // into or through a static fixture. Returns false when the particle then still overlaps a moving fixture
-// by more than half its radius: squeezed with no free place, it is crushed.
-bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, b2Vec2& position)
+// by more than half its radius: squeezed with no free place, it is crushed. So it is when a moving body
+// passed over where it ends, unless it ends at a `target` the body `placed` it at: stopped by a wall on
+// the way, or pushed to where it met the body (a thin plate rising fast into a ceiling leaves the particle
+// held under the ceiling below it: it went through the plate).
+bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, bool placed,
+          b2Vec2& position)
 {
     b2Vec2 push = target - position;
+    bool stopped = false; // by a wall: not where the body put it
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
@@ -90,6 +95,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
             position += push;
             break;
         }
+        stopped = true;
         position = wall.touch.position;
         // Slide: what is left of the push, less its part into the wall.
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
@@ -97,7 +103,8 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
     }
     // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
-    return !geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius);
+    return !geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius) &&
+           ((placed && !stopped) || !geometry.MovingPassesOver(position, side));
 }
 
 // Whether a disc at `position` overlaps a static shape by more than half its radius.
@@ -211,11 +218,11 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
         {
             // Where the body would put it; failing that (a wedge), where it met the body.
             const b2Vec2 free = position;
-            crushed = !Push(geometry, type.side, hit.touch.position, position);
+            crushed = !Push(geometry, type.side, hit.touch.position, true, position);
             if (crushed)
             {
                 position = free;
-                crushed = !Push(geometry, type.side, hit.firstTouch, position);
+                crushed = !Push(geometry, type.side, hit.firstTouch, false, position);
             }
             KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =

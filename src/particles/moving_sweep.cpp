@@ -160,6 +160,14 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
     return found;
 }
 
+bool WorldGeometry::MovingPassesOver(b2Vec2 point, const ParticleSide& side) const
+{
+    ParticleSide core = side;
+    core.radius = 0.25f * side.radius;
+    SweepResult passed;
+    return SweepMoving(point, point, core, false, passed);
+}
+
 bool WorldGeometry::MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const
 {
     const float r = side.radius;

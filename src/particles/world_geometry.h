@@ -162,6 +162,11 @@ public:
     /// polygons' cores) exceeds it. A polygon with `point` clearly more than r - depth in front of one of
     /// its edges' lines is passed over without measuring (most pushed particles sit on a surface).
     bool MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const;
+    /// Whether a moving fixture its filter accepts passes over `point` during the step: it comes within a
+    /// quarter of the disc's radius of it at some time (it covers more than three quarters of a disc at
+    /// rest there). A particle held there (pushed into static geometry) was run over by that body: it went
+    /// through it, not around it.
+    bool MovingPassesOver(b2Vec2 point, const ParticleSide& side) const;
 
     /// A box holding all moving geometry (an empty box when there is none): a disc whose path box
     /// misses it meets no moving shape, and SweepMoving would find nothing.

@@ -214,6 +214,66 @@ TEST(Events, EndScrapesEndsEveryOpenScrapeOnceAndTheNextStepBeginsANewOne)
     EXPECT_TRUE(OfType(again, EffectEventType::scrapeEnded).empty());
 }
 
+// A trial's event listener ended the scrapes (EndScrapes) when it heard a scrapeChanged: it then heard a
+// scrapeEnded twice and an event from beyond the end of Events(). Called from the listener, EndScrapes
+// appends the scrape ends to the step's events, and the listener hears each event once, in that order.
+TEST(Events, TheListenerMayEndTheScrapesAndHearsEachEventOnce)
+{
+    class Ending final : public EffectEventListener
+    {
+    public:
+        void OnEffectEvent(const EffectEvent& event) override
+        {
+            heard.push_back(event);
+            if (armed && event.type == EffectEventType::scrapeChanged)
+            {
+                armed = false;
+                effects->EndScrapes();
+            }
+        }
+        Effects* effects = nullptr;
+        bool armed = false;
+        std::vector<EffectEvent> heard;
+    } ending;
+    ScrapeScene scene;
+    b2Body* second = scene.CreateBox(b2Vec2(4.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    scene.effects->SetMaterial(second, scene.Material("steel"));
+    scene.StepPlain(30);
+    ending.effects = scene.effects.get();
+    scene.effects->SetEventListener(&ending);
+    std::vector<EffectEvent> events;
+    for (int i = 0; i < 12; ++i)
+    {
+        ending.armed = i == 10;
+        ending.heard.clear();
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        for (b2Body* box : {scene.box, second})
+        {
+            box->SetLinearVelocity(b2Vec2(4.0f, box->GetLinearVelocity().y));
+            box->SetAngularVelocity(0.0f);
+        }
+        scene.effects->Step(1.0f / 60.0f);
+        events.assign(scene.effects->Events().begin(), scene.effects->Events().end());
+        ASSERT_EQ(ending.heard.size(), events.size()) << "step " << i;
+        for (std::size_t k = 0; k < events.size(); ++k)
+        {
+            EXPECT_EQ(ending.heard[k].type, events[k].type) << "step " << i << ", event " << k;
+            EXPECT_EQ(ending.heard[k].id, events[k].id) << "step " << i << ", event " << k;
+        }
+        if (i == 10)
+        {
+            break;
+        }
+    }
+    const std::vector<EffectEvent> ended = OfType(events, EffectEventType::scrapeEnded);
+    ASSERT_EQ(ended.size(), 2u) << "both boxes' scrapes, once each";
+    EXPECT_NE(ended[0].id, ended[1].id);
+    EXPECT_EQ(ended[0].end, ScrapeEnd::stopped);
+    EXPECT_EQ(ended[1].end, ScrapeEnd::stopped);
+    EXPECT_EQ(events.back().type, EffectEventType::scrapeEnded) << "the ends follow the step's events";
+    ASSERT_FALSE(OfType(events, EffectEventType::scrapeChanged).empty());
+}
+
 TEST(Events, ScrapeEndsWhenABodyFallsAsleep)
 {
     ScrapeScene scene;

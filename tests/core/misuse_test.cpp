@@ -7,6 +7,7 @@
 #include "emitter.h"
 #include "events.h"
 #include "fixture_materials.h"
+#include "pointer_map.h"
 #include "test_world.h"
 
 #include <cmath>
@@ -339,6 +340,40 @@ TEST(EffectsMisuse, SetMaterialRefusesANullTargetAndAMaterialTheConfigLacks)
     EXPECT_EQ(effects.Material(scene.box->GetFixtureList()), steel);
     effects.SetMaterial(scene.box, MaterialId{}); // the invalid id still removes it
     EXPECT_FALSE(effects.Material(scene.box->GetFixtureList()).IsValid());
+}
+
+// A trial: Material(nullptr) crashed once any material was set, and ForgetFixture(nullptr) erased another
+// fixture's material (a null key matched the map's empty slots) and then lost later updates.
+TEST(EffectsMisuse, ANullFixtureHasNoMaterialAndForgettingOneIsRefused)
+{
+    SlideScene scene;
+    Effects& effects = *scene.effects;
+    const MaterialId concrete = scene.Material("concrete");
+    b2Fixture* ground = scene.ground->GetFixtureList();
+    ASSERT_EQ(effects.Material(ground), concrete);
+    EXPECT_FALSE(effects.Material(nullptr).IsValid());
+    for (int i = 0; i < 3; ++i)
+    {
+        EXPECT_EQ(Refusal([&] { effects.ForgetFixture(nullptr); }).path, "fixture");
+    }
+    EXPECT_EQ(effects.Material(ground), concrete) << "no other fixture's material is touched";
+    effects.SetMaterial(ground, scene.Material("steel"));
+    EXPECT_EQ(effects.Material(ground), scene.Material("steel")) << "and later updates hold";
+}
+
+TEST(PointerMap, ANullKeyIsNeverFoundNorErased)
+{
+    detail::PointerMap map;
+    int a = 0, b = 0;
+    map.Set(&a, 1);
+    map.Set(&b, 2);
+    EXPECT_EQ(map.Find(nullptr), nullptr);
+    EXPECT_FALSE(map.Erase(nullptr));
+    EXPECT_EQ(map.Size(), 2u);
+    ASSERT_NE(map.Find(&a), nullptr);
+    EXPECT_EQ(*map.Find(&a), 1u);
+    ASSERT_NE(map.Find(&b), nullptr);
+    EXPECT_EQ(*map.Find(&b), 2u);
 }
 
 // --- body-backed particles destroyed by the application --------------------------------------------

@@ -3,6 +3,7 @@
 // and 120 Hz (none at 30 and 240): it started where the rim comes down into the contact.
 #include "test_world.h"
 
+#include <box2d/b2_circle_shape.h>
 #include <box2d/b2_polygon_shape.h>
 #include <gtest/gtest.h>
 
@@ -137,6 +138,74 @@ TEST(SpawnSide, AWalkAlongTheSurfaceEndsAtWhatBlocksIt)
     EXPECT_GT(scene.Spawned("sparks"), 10u);
     EXPECT_GT(seen, 100u);
     EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+}
+
+// A trial laid a slab over a deep box, their tops level (y = 0), and slid a steel disc over the box's corner,
+// which the slab covers. Sparks started under the slab: the walk projected a start onto the box's side
+// face, below the slab, which is free but not reachable from the contact. Each start must now be reached
+// from the last in a straight line that crosses no other solid.
+TEST(SpawnSide, AFaceHiddenUnderAnotherFixtureIsNotReached)
+{
+    struct Run
+    {
+        float hz, speed, startX;
+        bool circle;
+    };
+    for (const Run run :
+         {Run{30.0f, 4.0f, -1.0f, true}, Run{60.0f, 4.0f, -1.0f, true}, Run{120.0f, 4.0f, -1.0f, true},
+          Run{240.0f, 4.0f, -1.0f, true}, Run{120.0f, -4.0f, 1.5f, true}, Run{240.0f, -4.0f, 1.5f, true},
+          Run{120.0f, 4.0f, -1.0f, false}, Run{240.0f, -4.0f, 1.5f, false}})
+    {
+        SCOPED_TRACE(testing::Message()
+                     << run.hz << " Hz, " << run.speed << " m/s, " << (run.circle ? "disc" : "box"));
+        TestWorld scene;
+        scene.particles.checkParticles = true;
+        b2BodyDef groundDef;
+        b2Body* ground = scene.world->CreateBody(&groundDef);
+        b2PolygonShape slab;
+        slab.SetAsBox(3.0f, 0.075f, b2Vec2(0.0f, -0.075f), 0.0f); // x -3 .. 3, y -0.15 .. 0
+        b2PolygonShape deep;
+        deep.SetAsBox(0.5f, 0.4f, b2Vec2(0.5f, -0.4f), 0.0f); // x 0 .. 1, y -0.8 .. 0
+        ground->CreateFixture(&slab, 0.0f)->SetFriction(0.6f);
+        ground->CreateFixture(&deep, 0.0f)->SetFriction(0.6f);
+        b2BodyDef slider;
+        slider.type = b2_dynamicBody;
+        slider.position.Set(run.startX, run.circle ? 0.11f : 0.1f);
+        b2Body* body = scene.world->CreateBody(&slider);
+        b2CircleShape disc;
+        disc.m_radius = 0.11f;
+        b2PolygonShape box;
+        box.SetAsBox(0.15f, 0.1f);
+        b2FixtureDef fixture;
+        fixture.shape = run.circle ? static_cast<const b2Shape*>(&disc) : &box;
+        fixture.density = 1.0f;
+        fixture.friction = 0.6f;
+        body->CreateFixture(&fixture);
+        Effects& fx = scene.Attach();
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(body, fx.FindMaterial("steel"));
+        const float dt = 1.0f / run.hz;
+        std::uint32_t below = 0;
+        for (int step = 0; step < static_cast<int>(run.hz); ++step) // 1 s
+        {
+            body->SetLinearVelocity(b2Vec2(run.speed, body->GetLinearVelocity().y));
+            body->SetAngularVelocity(0.0f);
+            scene.Step(dt);
+            const ParticleView view = fx.Particles();
+            for (std::uint32_t i = 0; i < view.count; ++i)
+            {
+                const std::uint32_t slot = view.Slot(i);
+                below += view.life[slot] > 0.0f && view.positionY[slot] < 0.0f &&
+                                 std::abs(view.positionX[slot]) < 3.0f
+                             ? 1u
+                             : 0u;
+            }
+        }
+        EXPECT_GT(scene.Spawned("sparks"), 20u);
+        EXPECT_EQ(below, 0u) << "particle steps below the ground's top";
+        EXPECT_EQ(fx.Stats().spawnedInsideSolid, 0u);
+        EXPECT_EQ(fx.Stats().particleStepsInside, 0u);
+    }
 }
 
 } // namespace cfx::test
