@@ -71,11 +71,7 @@ public:
         {
             return;
         }
-        const std::string expected =
-            range.minExclusive
-                ? "a number > " + FormatNumber(range.min) + " and <= " + FormatNumber(range.max)
-                : "a number between " + FormatNumber(range.min) + " and " + FormatNumber(range.max);
-        Fail(path, "expected " + expected + ", found " + FormatNumber(value));
+        Fail(path, "expected " + ExpectedNumber(range) + ", found " + FormatNumber(value));
     }
     // An integer within `range` (whose bounds are whole numbers).
     void Integer(const std::string& path, std::uint32_t value, const FieldRange& range)

@@ -8,6 +8,7 @@
 #include "contactfx/config_fields.h"
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -24,6 +25,17 @@ std::string ExpectedInteger(const FieldRange& range)
 {
     return "an integer in [" + std::to_string(static_cast<long long>(range.min)) + ", " +
            std::to_string(static_cast<long long>(range.max)) + "]";
+}
+
+std::string ExpectedNumber(const FieldRange& range)
+{
+    const auto text = [](float value)
+    {
+        char buffer[32];
+        return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+    };
+    return range.minExclusive ? "a number > " + text(range.min) + " and <= " + text(range.max)
+                              : "a number between " + text(range.min) + " and " + text(range.max);
 }
 
 std::string_view ExpectedText(TextRule rule)
@@ -141,8 +153,9 @@ const std::array kParticleTypeFields{
     Field<P>{.name = "radius",
              .member = &P::radius,
              .unit = "m",
-             .range = {0.0f, 10.0f, true},
-             .doc = "collision radius",
+             .range = {0.001f, 10.0f},
+             .doc = "collision radius (from 1 mm: below, float rounding at coordinates of metres is "
+                    "larger than the particle)",
              .step = 0.001f},
     Field<P>{
         .name = "restitution", .member = &P::restitution, .range = kUnit, .doc = "bounce", .step = 0.01f},

@@ -56,14 +56,31 @@ constexpr unsigned kGraceSeconds = 1;
 // signals blocked (WithSignalsBlocked).
 std::vector<std::pair<const void*, const char*>> g_temporaries;
 
+// Set once an OutputFiles has put its outputs in place: a signal from then on has nothing to undo.
+volatile std::sig_atomic_t g_committed = 0;
+
+// The signals stay pending while it lives (and are handled when it goes, an exception unwinding too).
+class SignalsBlocked
+{
+public:
+    SignalsBlocked()
+    {
+        sigset_t all;
+        sigfillset(&all);
+        ::pthread_sigmask(SIG_BLOCK, &all, &m_previous);
+    }
+    ~SignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &m_previous, nullptr); }
+    SignalsBlocked(const SignalsBlocked&) = delete;
+    SignalsBlocked& operator=(const SignalsBlocked&) = delete;
+
+private:
+    sigset_t m_previous;
+};
+
 template <class Change> void WithSignalsBlocked(Change&& change)
 {
-    sigset_t all;
-    sigset_t previous;
-    sigfillset(&all);
-    ::pthread_sigmask(SIG_BLOCK, &all, &previous);
+    const SignalsBlocked blocked;
     change();
-    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
 void Say(const char* text)
@@ -74,6 +91,15 @@ void Say(const char* text)
 
 extern "C" void OnSignal(int signal)
 {
+    if (g_committed != 0)
+    {
+        // The outputs are all in place (the signal waited while they were put there): nothing to undo.
+        const int first = g_signal != 0 ? g_signal : signal;
+        Say("contactfx: error: interrupted by ");
+        Say(first == SIGINT ? "Interrupt" : first == SIGTERM ? "Terminated" : "Hangup");
+        Say(" after its outputs were written\n");
+        ::_exit(1);
+    }
     if (signal != SIGALRM && g_preparedOutputs == 0)
     {
         g_signal = signal; // stops at once
@@ -102,6 +128,7 @@ void InstallHandlers()
         return;
     }
     g_signal = 0;
+    g_committed = 0;
     for (int i = 0; i < 4; ++i)
     {
         struct sigaction action
@@ -275,11 +302,17 @@ void OutputFiles::Prepare()
     WithSignalsBlocked([] { g_preparedOutputs = g_preparedOutputs + 1; });
     for (Output& output : m_outputs)
     {
+        // A file that replaces another has its mode from the start: what it holds while the command runs
+        // is no more readable than what it replaces (Commit sets the mode again, in case it changed).
+        struct stat existing = {};
+        const bool replaces = !output.scratch && ::stat(output.real.c_str(), &existing) == 0;
+        const mode_t mode = replaces ? (existing.st_mode & 07777) : 0666;
         int descriptor = -1;
         for (int attempt = 0; attempt < 16 && descriptor < 0; ++attempt)
         {
             output.temporary = Beside(output.real, ".tmp-");
-            descriptor = ::open(output.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            descriptor = ::open(output.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
+                                replaces ? 0600 : mode);
             if (descriptor < 0 && errno != EEXIST)
             {
                 const int error = errno;
@@ -291,6 +324,10 @@ void OutputFiles::Prepare()
         {
             output.temporary.clear();
             Fail(output, "cannot write: no free temporary file name");
+        }
+        if (replaces)
+        {
+            ::fchmod(descriptor, mode);
         }
         ::close(descriptor);
         // Its name stays in this buffer until the object goes (cleared, never reallocated).
@@ -398,9 +435,9 @@ void OutputFiles::CloseStream(Output& output, bool check)
 
 void OutputFiles::Commit()
 {
-    CheckInterrupted();
     for (Output& output : m_outputs)
     {
+        CheckInterrupted(); // syncing thousands of frames takes a while: an interrupt stops it at once
         CloseStream(output, true);
         if (output.scratch)
         {
@@ -428,6 +465,11 @@ void OutputFiles::Commit()
         }
     }
     // Rename in order; on failure put back what was replaced (kept as hard links) and remove what was new.
+    // The last moment an interrupt leaves everything as it was; from here on the signals wait until every
+    // output is in place (or every replaced file is back), and then stop the command with a message that
+    // says so: never a part of the outputs written, never backups left behind.
+    CheckInterrupted();
+    const SignalsBlocked blocked;
     std::vector<fs::path> backups(m_outputs.size());
     std::size_t done = 0;
     for (; done < m_outputs.size(); ++done)
@@ -446,6 +488,10 @@ void OutputFiles::Commit()
             {
                 backups[done] = backup;
             }
+        }
+        if (m_beforeRename)
+        {
+            m_beforeRename(done);
         }
         if (::rename(output.temporary.c_str(), output.real.c_str()) != 0)
         {
@@ -482,6 +528,8 @@ void OutputFiles::Commit()
         }
     }
     m_committed = true;
+    std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); // renamed
+    g_committed = 1;
 }
 
 void OutputFiles::RemoveTemporaries()

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -88,8 +89,13 @@ public:
     void CheckInterrupted() const;
 
     /// Flushes and syncs every temporary file, checks the targets again, and renames them all into
-    /// place, or none (see the file comment). Throws InputError naming the file that failed.
+    /// place, or none (see the file comment). Throws InputError naming the file that failed. An interrupt
+    /// before the renames unwinds as in CheckInterrupted; one during them waits until they are done, then
+    /// stops the program (exit 1, "interrupted by ... after its outputs were written").
     void Commit();
+
+    /// For tests: called in Commit before each rename, with the output's index, signals blocked.
+    void OnBeforeRename(std::function<void(std::size_t)> call) { m_beforeRename = std::move(call); }
 
 private:
     struct Output
@@ -114,6 +120,7 @@ private:
     std::vector<Diagnostic> m_refused; ///< Refuse()'s problems
     bool m_prepared = false;
     bool m_committed = false;
+    std::function<void(std::size_t)> m_beforeRename; ///< OnBeforeRename
 };
 
 /// Called once, first thing in main: SIGINT, SIGTERM and SIGHUP before any OutputFiles is prepared (a

@@ -86,6 +86,9 @@ template <typename S> struct Field
 /// docs show as "integer [1, 4000000]"), whatever the wrong value was (out of range, negative, too large for
 /// the member, not a whole number, not a number), from the reader and from Validate alike.
 std::string ExpectedInteger(const FieldRange& range);
+/// The same for a number field: "a number between 0 and 1", or "a number > 0 and <= 3600" when the range
+/// excludes its minimum.
+std::string ExpectedNumber(const FieldRange& range);
 
 /// What a text field of `rule` must hold, for messages: "a material name", "a particle type name", ...
 std::string_view ExpectedText(TextRule rule);

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <variant>
 
@@ -61,12 +62,26 @@ void ReadChoice(const ObjectReader& reader, std::string_view key, std::span<cons
                              "expected one of " + expected + ", found " + scene_detail::Describe(*value));
 }
 
-std::optional<Color> ReadColor(const Json& value, const std::string& path, DiagnosticList& diagnostics)
+// `range`: each channel's. When a channel is not a number, the colour is not read, and Validate sees none
+// of it: the other channels' range problems are reported here, so that every problem comes at once.
+std::optional<Color> ReadColor(const Json& value, const std::string& path, const FieldRange& range,
+                               DiagnosticList& diagnostics)
 {
     std::optional<std::vector<float>> channels =
         scene_detail::ReadFloatArray(value, path, diagnostics, scene_detail::kAnyFinite);
     if (!channels)
     {
+        for (std::size_t i = 0; value.is_array() && i < value.size(); ++i)
+        {
+            const Json& channel = value[i];
+            // Numbers beyond the float range are the array reader's to report.
+            if (channel.is_number() && std::abs(channel.get<double>()) <= std::numeric_limits<float>::max() &&
+                !range.Contains(channel.get<float>()))
+            {
+                diagnostics.Add(path + "[" + std::to_string(i) + "]",
+                                "expected " + ExpectedNumber(range) + ", found " + channel.dump());
+            }
+        }
         return std::nullopt;
     }
     if (channels->size() != 3 && channels->size() != 4)
@@ -162,7 +177,7 @@ template <typename S> void ReadField(const ObjectReader& reader, const Field<S>&
             else if constexpr (std::is_same_v<M, Color S::*>)
             {
                 if (std::optional<Color> color =
-                        ReadColor(*value, reader.FieldPath(key), reader.Diagnostics()))
+                        ReadColor(*value, reader.FieldPath(key), field.range, reader.Diagnostics()))
                 {
                     out.*member = *color;
                 }

@@ -108,7 +108,7 @@ std::vector<BadFile> BadFiles()
          "body[0].fixture[0].restitution", "expected a number between 0 and 10, found 1e+30"},
         {"huge_radius.effects.json",
          R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "radius": 3e9}]})",
-         "particleTypes[0].radius", "expected a number > 0 and <= 10, found 3e+09"},
+         "particleTypes[0].radius", "expected a number between 0.001 and 10, found 3e+09"},
         {"huge_rate.effects.json",
          Effects(R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks",
                      "ratePerIntensity": 1e9, "maxRate": 1e9})"),

@@ -163,7 +163,7 @@ TEST(EffectsJson, HugeNumbersAreOutOfRange)
         return false;
     };
     EXPECT_TRUE(has(problemsOf(R"(, "radius": 3e9)", ""), "particleTypes[0].radius",
-                    "expected a number > 0 and <= 10, found 3e+09"));
+                    "expected a number between 0.001 and 10, found 3e+09"));
     const auto extremes = problemsOf(R"(, "gravityScale": 3.4e38, "normalSpeed": -3.4e38, "spread": 3.4e38,
         "inheritA": 3.4e38, "inheritB": -3.4e38, "slipFactor": 3.4e38, "drag": 1e9, "lifetime": 1e9,
         "lifeFromIntensity": 1e9, "friction": 1e9, "density": 1e9, "sizeStart": 1e9, "sizeEnd": 1e9,
@@ -331,6 +331,19 @@ TEST(EffectsJson, AColourElementIsNamedByItsIndexInTheFile)
         R"({"materials": ["a"], "particleTypes": [{"name": "p", "colorStart": [0.5, "x", 0.5, 1]}]})");
     ASSERT_EQ(wrongKind.size(), 1u);
     EXPECT_EQ(wrongKind[0].rfind("particleTypes[0].colorStart[1]: ", 0), 0u) << wrongKind[0];
+}
+
+// A trial's colour with one element of the wrong kind got only that one reported; its elements out of range
+// went unsaid until it was mended. Every problem comes at once, both kinds in the file's order of elements.
+TEST(EffectsJson, AColoursRangeProblemsComeWithItsWrongKindOfElement)
+{
+    const std::vector<std::string> problems = ProblemsOf(
+        R"({"materials": ["a"], "particleTypes": [{"name": "p", "colorStart": [1.01, -0.01, "1", 2]}]})");
+    ASSERT_EQ(problems.size(), 4u);
+    EXPECT_EQ(problems[0].rfind("particleTypes[0].colorStart[2]: expected a number", 0), 0u) << problems[0];
+    EXPECT_EQ(problems[1], "particleTypes[0].colorStart[0]: expected a number between 0 and 1, found 1.01");
+    EXPECT_EQ(problems[2], "particleTypes[0].colorStart[1]: expected a number between 0 and 1, found -0.01");
+    EXPECT_EQ(problems[3], "particleTypes[0].colorStart[3]: expected a number between 0 and 1, found 2");
 }
 
 // A sound rule tunes the voices of the pair rule with its two materials (docs/sound.md): one for a pair that

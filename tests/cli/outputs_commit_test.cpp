@@ -1,0 +1,128 @@
+// OutputFiles::Commit against interrupts, in-process (the CLI tests cannot time a signal into it). A trial
+// sent Ctrl-C while a 24,000-frame sequence was being renamed into place: the command said "no output
+// written" with every frame replaced and 20,000 backups left, because the signal's one-second grace ran
+// out in the middle of the renames. And a temporary file that replaced a 0640 file was readable by all
+// while the command ran.
+#include "cli/cli_support.h"
+#include "outputs.h"
+
+#include <algorithm>
+#include <csignal>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+namespace cfx::cli
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+using test::FileText;
+using test::ScratchDir;
+using test::WriteTestFile;
+
+constexpr int kOutputs = 5;
+
+// Writes "new i" into every output of `dir` through an OutputFiles and commits, calling `beforeRename`
+// before each rename.
+void WriteAll(const fs::path& dir, const std::function<void(std::size_t)>& beforeRename)
+{
+    OutputFiles outputs;
+    std::vector<OutputFiles::Handle> handles;
+    for (int i = 0; i < kOutputs; ++i)
+    {
+        handles.push_back(outputs.Add("--out", dir / ("f" + std::to_string(i) + ".txt")));
+    }
+    outputs.Prepare();
+    for (int i = 0; i < kOutputs; ++i)
+    {
+        outputs.Write(handles[i], "new " + std::to_string(i));
+    }
+    outputs.OnBeforeRename(beforeRename);
+    outputs.Commit();
+}
+
+void WriteOld(const fs::path& dir)
+{
+    for (int i = 0; i < kOutputs; ++i)
+    {
+        WriteTestFile(dir / ("f" + std::to_string(i) + ".txt"), "old " + std::to_string(i));
+    }
+}
+
+std::vector<std::string> Names(const fs::path& dir)
+{
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+    {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+const std::vector<std::string> kTargets{"f0.txt", "f1.txt", "f2.txt", "f3.txt", "f4.txt"};
+
+TEST(OutputsCommit, AnInterruptDuringTheRenamesWaitsForThemAllAndSaysTheOutputsWereWritten)
+{
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const fs::path dir = ScratchDir("outputs_commit_interrupt");
+    WriteOld(dir);
+    EXPECT_EXIT(
+        {
+            WriteAll(dir,
+                     [](std::size_t index)
+                     {
+                         if (index == 1)
+                         {
+                             ::raise(SIGINT); // after the first rename: waits until the last is done
+                         }
+                     });
+            std::exit(0); // not reached: the interrupt stops the program once the outputs are in place
+        },
+        ::testing::ExitedWithCode(1), "interrupted by Interrupt after its outputs were written");
+    EXPECT_EQ(Names(dir), kTargets) << "no temporary or backup file left";
+    for (int i = 0; i < kOutputs; ++i)
+    {
+        EXPECT_EQ(FileText(dir / kTargets[i]), "new " + std::to_string(i)) << "every output written";
+    }
+}
+
+TEST(OutputsCommit, AnInterruptBeforeTheRenamesLeavesEveryOldFile)
+{
+    const fs::path dir = ScratchDir("outputs_commit_before");
+    WriteOld(dir);
+    OutputFiles outputs;
+    const OutputFiles::Handle handle = outputs.Add("--out", dir / "f0.txt");
+    outputs.Prepare();
+    outputs.Write(handle, "new 0");
+    ::raise(SIGINT); // caught: the handler notes it, and Commit unwinds before renaming anything
+    EXPECT_THROW(outputs.Commit(), std::runtime_error);
+    EXPECT_EQ(FileText(dir / "f0.txt"), "old 0");
+}
+
+TEST(OutputsCommit, ATemporaryFileHasTheModeOfTheFileItReplacesFromTheStart)
+{
+    const fs::path dir = ScratchDir("outputs_commit_mode");
+    WriteTestFile(dir / "f0.txt", "old 0");
+    ASSERT_EQ(::chmod((dir / "f0.txt").c_str(), 0640), 0);
+    OutputFiles outputs;
+    const OutputFiles::Handle handle = outputs.Add("--out", dir / "f0.txt");
+    const OutputFiles::Handle fresh = outputs.Add("--out", dir / "f1.txt");
+    outputs.Prepare();
+    struct stat info = {};
+    ASSERT_EQ(::stat(outputs.Temporary(handle).c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 0777u, 0640u);
+    ASSERT_EQ(::stat(outputs.Temporary(fresh).c_str(), &info), 0);
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    EXPECT_EQ(info.st_mode & 0777u, 0666u & ~mask) << "a new file as any other";
+    outputs.Write(handle, "new 0");
+    outputs.Write(fresh, "new 1");
+    outputs.Commit();
+    ASSERT_EQ(::stat((dir / "f0.txt").c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 0777u, 0640u);
+}
+
+} // namespace
+} // namespace cfx::cli
