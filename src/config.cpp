@@ -1,11 +1,13 @@
 #include "contactfx/config.h"
 
 #include "contactfx/config_fields.h"
+#include "quoted_text.h"
 
 #include <charconv>
 #include <cmath>
 #include <optional>
 #include <set>
+#include <string_view>
 #include <utility>
 
 namespace cfx
@@ -103,6 +105,16 @@ private:
     std::vector<Diagnostic>& m_out;
 };
 
+// Names show in line-based output (validate, the run summary): a line break or a NUL in one would forge or
+// cut a line.
+bool HasControlCharacter(std::string_view name)
+{
+    return std::any_of(name.begin(), name.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+}
+
+const std::string kNoControlCharacters = "expected a name without control characters, found ";
+
 void CheckText(Checker& check, const std::string& path, const std::string& text, TextRule rule,
                const EffectsConfig& config)
 {
@@ -125,11 +137,11 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
         }
         else if (rule == TextRule::material && !config.FindMaterial(text).IsValid())
         {
-            check.Fail(path, "unknown material \"" + text + "\"");
+            check.Fail(path, "unknown material " + detail::QuotedText(text));
         }
         else if (rule == TextRule::particleType && !config.FindParticleType(text).IsValid())
         {
-            check.Fail(path, "unknown particle type \"" + text + "\"");
+            check.Fail(path, "unknown particle type " + detail::QuotedText(text));
         }
         break;
     }
@@ -255,9 +267,13 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         {
             check.Fail(at, "expected a non-empty name");
         }
+        else if (HasControlCharacter(config.materials[i]))
+        {
+            check.Fail(at, kNoControlCharacters + detail::QuotedText(config.materials[i]));
+        }
         else if (!seen.insert(config.materials[i]).second)
         {
-            check.Fail(at, "duplicate material \"" + config.materials[i] + "\"");
+            check.Fail(at, "duplicate material " + detail::QuotedText(config.materials[i]));
         }
     }
 
@@ -274,9 +290,13 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         {
             check.Fail(at + ".name", "expected a non-empty name");
         }
+        else if (HasControlCharacter(type.name))
+        {
+            check.Fail(at + ".name", kNoControlCharacters + detail::QuotedText(type.name));
+        }
         else if (!seen.insert(type.name).second)
         {
-            check.Fail(at + ".name", "duplicate particle type \"" + type.name + "\"");
+            check.Fail(at + ".name", "duplicate particle type " + detail::QuotedText(type.name));
         }
         CheckFields(check, at, type, ParticleTypeFields(), config);
     }

@@ -241,8 +241,8 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         ->transform(WholeNumberIn(0, 8))
         ->capture_default_str();
     particles->add_flag("--json", particleOptions->json, "One JSON object instead of text");
-    particles->callback([particleOptions, &result]
-                        { result = Guarded([&] { return RunParticles(*particleOptions); }); });
+    particles->callback([particles, particleOptions, &result]
+                        { result = Guarded(*particles, [&] { return RunParticles(*particleOptions); }); });
 
     auto demoOptions = std::make_shared<DemoBenchOptions>();
     CLI::App* demo =
@@ -251,7 +251,8 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         ->transform(WholeNumberIn(1, 1000000))
         ->capture_default_str();
     demo->add_flag("--json", demoOptions->json, "One JSON object instead of text");
-    demo->callback([demoOptions, &result] { result = Guarded([&] { return RunDemo(*demoOptions); }); });
+    demo->callback([demo, demoOptions, &result]
+                   { result = Guarded(*demo, [&] { return RunDemo(*demoOptions); }); });
 
     auto debrisOptions = std::make_shared<DebrisBenchOptions>();
     CLI::App* debris = bench->add_subcommand(
@@ -267,8 +268,8 @@ void RegisterBenchCommand(CLI::App& app, int& result)
         ->transform(WholeNumberIn(1, 100000))
         ->capture_default_str();
     debris->add_flag("--json", debrisOptions->json, "One JSON object instead of text");
-    debris->callback([debrisOptions, &result]
-                     { result = Guarded([&] { return RunDebris(*debrisOptions); }); });
+    debris->callback([debris, debrisOptions, &result]
+                     { result = Guarded(*debris, [&] { return RunDebris(*debrisOptions); }); });
 }
 
 } // namespace cfx::cli

@@ -3,6 +3,7 @@
 #include "contactfx/error.h"
 #include "contactfx/presets.h"
 #include "contactfx/scene/effects_json.h"
+#include "usage.h"
 
 #include <algorithm>
 #include <array>
@@ -174,7 +175,7 @@ EffectsConfig SelectConfig(const RunOptions& options)
     return options.preset == "tutorial" ? TutorialPreset() : DefaultPreset();
 }
 
-int Guarded(const std::function<int()>& body)
+int Guarded(const CLI::App& command, const std::function<int()>& body)
 {
     try
     {
@@ -182,9 +183,15 @@ int Guarded(const std::function<int()>& body)
     }
     catch (const InputError& error)
     {
+        bool commandLineOnly = !error.Diagnostics().empty();
         for (const Diagnostic& problem : error.Diagnostics())
         {
             std::cerr << "contactfx: error: " << problem.ToString() << '\n';
+            commandLineOnly = commandLineOnly && problem.file == kCommandLine;
+        }
+        if (commandLineOnly)
+        {
+            std::cerr << "See '" << CommandPath(command) << " --help'.\n";
         }
     }
     catch (const std::exception& error)

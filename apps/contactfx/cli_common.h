@@ -75,7 +75,9 @@ std::string NumberText(float value);
 /// preset.
 EffectsConfig SelectConfig(const RunOptions& options);
 
-/// Runs `body`, turning exceptions into one error line per problem on stderr and exit code 1.
-int Guarded(const std::function<int()>& body);
+/// Runs `command`'s `body`, turning exceptions into one error line per problem on stderr and exit code 1.
+/// When every problem is the command line's (a flag's value out of its range: `--hz 0`), a last line
+/// points at the command's help, as after an error CLI11 finds while parsing.
+int Guarded(const CLI::App& command, const std::function<int()>& body);
 
 } // namespace cfx::cli

@@ -26,29 +26,29 @@ void RegisterPresetCommand(CLI::App& app, int& result)
     command->add_option("--out", options->out, "Write to this file instead of standard output")
         ->check(NamesAFile());
     command->callback(
-        [options, &result]
+        [command, options, &result]
         {
-            result = Guarded(
-                [&]
-                {
-                    const EffectsConfig config =
-                        options->name == "tutorial" ? TutorialPreset() : DefaultPreset();
-                    if (options->out.empty())
-                    {
-                        std::cout << SaveEffectsString(config);
-                    }
-                    else
-                    {
-                        // Checked and written like every output (outputs.h): never over a device, a
-                        // read-only file or a directory.
-                        OutputFiles outputs;
-                        const OutputFiles::Handle out = outputs.Add("--out", options->out);
-                        outputs.Prepare();
-                        outputs.Write(out, SaveEffectsString(config));
-                        outputs.Commit();
-                    }
-                    return kExitOk;
-                });
+            result = Guarded(*command,
+                             [&]
+                             {
+                                 const EffectsConfig config =
+                                     options->name == "tutorial" ? TutorialPreset() : DefaultPreset();
+                                 if (options->out.empty())
+                                 {
+                                     std::cout << SaveEffectsString(config);
+                                 }
+                                 else
+                                 {
+                                     // Checked and written like every output (outputs.h): never over a
+                                     // device, a read-only file or a directory.
+                                     OutputFiles outputs;
+                                     const OutputFiles::Handle out = outputs.Add("--out", options->out);
+                                     outputs.Prepare();
+                                     outputs.Write(out, SaveEffectsString(config));
+                                     outputs.Commit();
+                                 }
+                                 return kExitOk;
+                             });
         });
 }
 

@@ -397,7 +397,8 @@ void RegisterRenderCommand(CLI::App& app, int& result)
                      "Some debug layers, comma-separated: points, normals, impulses, rules, velocities")
         ->delimiter(',')
         ->check(CLI::IsMember(layerNames));
-    render->callback([options, &result] { result = Guarded([&] { return Render(*options); }); });
+    render->callback([render, options, &result]
+                     { result = Guarded(*render, [&] { return Render(*options); }); });
 }
 
 } // namespace cfx::cli

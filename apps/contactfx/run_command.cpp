@@ -186,14 +186,14 @@ void RegisterRunCommands(CLI::App& app, int& result)
     AddSoundOptions(*demo, *demoOptions);
     AddPlotOption(*demo, *demoPlot);
     demo->callback(
-        [demoOptions, demoPlot, &result]
+        [demo, demoOptions, demoPlot, &result]
         {
-            result = Guarded(
-                [&]
-                {
-                    demoOptions->sceneName = "tutorial";
-                    return Simulate(*demoOptions, "contactfx demo", *demoPlot);
-                });
+            result = Guarded(*demo,
+                             [&]
+                             {
+                                 demoOptions->sceneName = "tutorial";
+                                 return Simulate(*demoOptions, "contactfx demo", *demoPlot);
+                             });
         });
 
     auto runOptions = std::make_shared<RunOptions>();
@@ -209,16 +209,16 @@ void RegisterRunCommands(CLI::App& app, int& result)
     AddSoundOptions(*run, *runOptions);
     AddPlotOption(*run, *runPlot);
     run->callback(
-        [runOptions, runPlot, &result]
+        [run, runOptions, runPlot, &result]
         {
-            result = Guarded(
-                [&]
-                {
-                    const std::string what = runOptions->sceneName.empty()
-                                                 ? runOptions->scene
-                                                 : "--scene " + runOptions->sceneName;
-                    return Simulate(*runOptions, "contactfx run " + what, *runPlot);
-                });
+            result = Guarded(*run,
+                             [&]
+                             {
+                                 const std::string what = runOptions->sceneName.empty()
+                                                              ? runOptions->scene
+                                                              : "--scene " + runOptions->sceneName;
+                                 return Simulate(*runOptions, "contactfx run " + what, *runPlot);
+                             });
         });
 }
 

@@ -287,7 +287,8 @@ void RegisterValidateCommand(CLI::App& app, int& result)
     AddEffectsOptions(*command, options->effects,
                       "Effects config whose materials the scenes' `material` properties must name "
                       "(overrides --preset)");
-    command->callback([options, &result] { result = Guarded([&] { return Validate(*options); }); });
+    command->callback([command, options, &result]
+                      { result = Guarded(*command, [&] { return Validate(*options); }); });
 }
 
 } // namespace cfx::cli

@@ -47,8 +47,8 @@ struct ParticleBudget
 /// A complete effects configuration.
 struct EffectsConfig
 {
-    std::string name;                           ///< for display ("tutorial", "default")
-    std::vector<std::string> materials;         ///< unique, non-empty names; at most 65534
+    std::string name;                   ///< for display ("tutorial", "default")
+    std::vector<std::string> materials; ///< unique, non-empty names, no control characters; at most 65534
     std::vector<ParticleTypeDef> particleTypes; ///< unique names
     std::vector<RuleDef> rules;                 ///< at most one per unordered material pair
     ParticleBudget budget;

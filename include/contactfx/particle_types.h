@@ -31,7 +31,7 @@ enum class ParticleBackend : std::uint8_t
 /// ranges keep the simulation finite and its cost bounded (docs/effects-config.md).
 struct ParticleTypeDef
 {
-    std::string name; ///< unique, non-empty
+    std::string name; ///< unique, non-empty, no control characters
 
     // Life: 1 at birth at most, the particle dies at 0.
     /// Start life = clamp(lifeBase + lifeFromIntensity * intensity, 0, 1). The tutorial: 0 + 0.3 * I.

@@ -5,6 +5,7 @@
 #include "contactfx/scene/scene_materials.h"
 
 #include "contactfx/effects.h"
+#include "quoted_text.h"
 #include "scene/json_reader.h"
 
 #include <box2d/b2_body.h>
@@ -18,12 +19,18 @@ namespace cfx
 namespace
 {
 
+// The first kListed names (a config of 20,000 materials made a message of 900 kB per fixture).
 std::string KnownMaterials(const EffectsConfig& config)
 {
+    constexpr std::size_t kListed = 20;
     std::string known;
-    for (const std::string& each : config.materials)
+    for (std::size_t i = 0; i < config.materials.size() && i < kListed; ++i)
     {
-        known += (known.empty() ? "" : ", ") + each;
+        known += (known.empty() ? "" : ", ") + config.materials[i];
+    }
+    if (config.materials.size() > kListed)
+    {
+        known += " and " + std::to_string(config.materials.size() - kListed) + " more";
     }
     return known.empty() ? "no materials" : known;
 }
@@ -86,8 +93,8 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
             if (!material.IsValid())
             {
                 problems.push_back({std::string(file), path + ".string",
-                                    "unknown material \"" + *name +
-                                        "\" (the effects config has: " + KnownMaterials(config) + ")"});
+                                    "unknown material " + detail::QuotedText(*name) +
+                                        " (the effects config has: " + KnownMaterials(config) + ")"});
                 continue;
             }
             materials[f] = material;

@@ -161,6 +161,35 @@ TEST(CliConventions, AnEmptyFileNameIsRefused)
     }
 }
 
+// A trial found the help pointer after `--threads 0` (CLI11's check) but not after `--hz 0` (the command's
+// own range check): every error about the command line alone now ends with it, whoever found it.
+TEST(CliConventions, EveryCommandLineErrorPointsAtTheHelp)
+{
+    const struct
+    {
+        std::string args;
+        std::string line;
+        std::string command;
+    } cases[] = {
+        {"run --scene grinder --hz 0", "--hz: expected a number in [1, 10000], found 0", "run"},
+        {"run --scene grinder --seconds -1", "--seconds: expected a number in (0, 86400], found -1", "run"},
+        {"render --demo --time nan --out x.png", "--time: expected a number in [0, 86400], found nan",
+         "render"},
+        {"run --scene grinder --threads 0", "--threads: expected a whole number from 1 to 8, found \"0\"",
+         "run"},
+    };
+    for (const auto& refused : cases)
+    {
+        const CliResult result = RunCli(refused.args);
+        EXPECT_EQ(result.exitCode, 1) << refused.args << "\n" << result.output;
+        EXPECT_EQ(result.output, "contactfx: error: <command line>: " + refused.line + "\nSee 'contactfx " +
+                                     refused.command + " --help'.\n")
+            << refused.args;
+    }
+    const CliResult file = RunCli("run nonexistent.json");
+    EXPECT_EQ(file.output.find("--help"), std::string::npos) << "a file's error is not the command line's";
+}
+
 // What CLI11 itself finds wrong is said in the project's format, naming the option or argument.
 TEST(CliConventions, ParseErrorsNameTheCommandLineAndTheOption)
 {

@@ -490,8 +490,9 @@ void DocRows(std::span<const Field<S>> fields, const S& defaults, const std::str
                 }
                 else if constexpr (std::is_same_v<M, std::string S::*>)
                 {
-                    static constexpr const char* kRules[] = {"text", "unique, non-empty", "non-empty glob",
-                                                             "a material name", "a particle type name"};
+                    static constexpr const char* kRules[] = {
+                        "text", "unique, non-empty, no control characters", "non-empty glob",
+                        "a material name", "a particle type name"};
                     values = kRules[static_cast<int>(field.text)];
                     // What the reader requires (IsRequired) has no default to show.
                     EXPECT_EQ(IsRequired(field), (defaults.*member).empty() && field.text != TextRule::any)

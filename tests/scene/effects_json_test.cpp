@@ -346,6 +346,21 @@ TEST(EffectsJson, AColoursRangeProblemsComeWithItsWrongKindOfElement)
     EXPECT_EQ(problems[3], "particleTypes[0].colorStart[3]: expected a number between 0 and 1, found 2");
 }
 
+// A trial's names with a line break forged lines of validate's output, and a NUL cut the run summary's.
+// Names may not hold control characters, and a name a message quotes is escaped.
+TEST(EffectsJson, NamesWithControlCharactersAreRefusedAndQuotedEscaped)
+{
+    const std::vector<std::string> problems = ProblemsOf(
+        R"({"materials": ["a\nb: ok", "st\u0000eel"], "particleTypes": [{"name": "p\tq"}],
+            "rules": [{"materialA": "a\nb: ok", "materialB": "zz\nfake.json: ok", "particleType": "p\tq"}]})");
+    const std::vector<std::string> expected = {
+        "materials[0]: expected a name without control characters, found \"a\\nb: ok\"",
+        "materials[1]: expected a name without control characters, found \"st\\u0000eel\"",
+        "particleTypes[0].name: expected a name without control characters, found \"p\\tq\"",
+        "rules[0].materialB: unknown material \"zz\\nfake.json: ok\""};
+    EXPECT_EQ(problems, expected);
+}
+
 // A sound rule tunes the voices of the pair rule with its two materials (docs/sound.md): one for a pair that
 // no rule makes particles for would never apply.
 TEST(EffectsJson, ASoundRuleForAPairWithoutARuleIsAnError)

@@ -163,6 +163,27 @@ TEST(SceneMaterials, AChainsBackSideGetsTheChainsMaterial)
     EXPECT_EQ(effects.Material(scene.fixtures[0].backSide), road);
 }
 
+// A trial's config of 20,000 materials made every unknown material's message list all of them (900 kB a
+// fixture); and a material name with a line break forged a second line of validate's output.
+TEST(SceneMaterials, AnUnknownMaterialsMessageIsOneLineOfBoundedLength)
+{
+    const std::string bodies =
+        R"({"type": 2, "position": 0, "awake": true, "fixture": [{"density": 1, "customProperties": [{"name":
+            "material", "string": "zz\nfake.json: ok"}], "circle": {"radius": 1}}]})";
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    EffectsConfig config = TutorialPreset();
+    while (config.materials.size() < 25)
+    {
+        config.materials.push_back("m" + std::to_string(config.materials.size()));
+    }
+    const std::vector<Diagnostic> problems = ResolveErrors(scene, config);
+    ASSERT_EQ(problems.size(), 1u) << test::Dump(problems);
+    EXPECT_EQ(problems[0].message.find('\n'), std::string::npos) << problems[0].message;
+    EXPECT_NE(problems[0].message.find("unknown material \"zz\\nfake.json: ok\""), std::string::npos)
+        << problems[0].message;
+    EXPECT_NE(problems[0].message.find(", m19 and 5 more)"), std::string::npos) << problems[0].message;
+}
+
 TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
 {
     const std::string bodies =

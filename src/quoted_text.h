@@ -1,0 +1,15 @@
+// contactfx internal: a name from a file, quoted for a message.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace cfx::detail
+{
+
+/// `text` between double quotes, with quotes, backslashes and control characters escaped as JSON escapes
+/// them ("a\nb" for a line break): a name read from a file can neither end its message early nor forge
+/// another line of it. Other bytes (UTF-8) are kept.
+std::string QuotedText(std::string_view text);
+
+} // namespace cfx::detail
