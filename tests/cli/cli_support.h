@@ -3,6 +3,7 @@
 
 #include "rube_samples_dir.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace cfx::test
 {
@@ -100,6 +102,18 @@ inline std::string FileText(const std::filesystem::path& path)
 inline std::uint64_t Spawned(const std::filesystem::path& stats, const char* type)
 {
     return nlohmann::json::parse(FileText(stats))["spawned"][type].get<std::uint64_t>();
+}
+
+/// Every name in `dir`, hidden temporary files included, sorted.
+inline std::vector<std::string> FilesIn(const std::filesystem::path& dir)
+{
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+    {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 /// Writes a test input (not atomically: tests only).

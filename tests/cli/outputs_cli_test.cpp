@@ -38,18 +38,6 @@ CliResult RunCliLimited(int blocks, const std::string& args)
     return RunCommand("ulimit -f " + std::to_string(blocks) + "; exec " + Binary() + " " + args);
 }
 
-// Every name in `dir`, hidden temporary files included.
-std::vector<std::string> FilesIn(const fs::path& dir)
-{
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir))
-    {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 std::string Join(const std::vector<std::string>& names)
 {
     std::string text;

@@ -17,6 +17,7 @@ namespace
 {
 
 namespace fs = std::filesystem;
+using test::FilesIn;
 using test::FileText;
 using test::ScratchDir;
 using test::WriteTestFile;
@@ -50,17 +51,6 @@ void WriteOld(const fs::path& dir)
     }
 }
 
-std::vector<std::string> Names(const fs::path& dir)
-{
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir))
-    {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 const std::vector<std::string> kTargets{"f0.txt", "f1.txt", "f2.txt", "f3.txt", "f4.txt"};
 
 TEST(OutputsCommit, AnInterruptDuringTheRenamesWaitsForThemAllAndSaysTheOutputsWereWritten)
@@ -81,7 +71,7 @@ TEST(OutputsCommit, AnInterruptDuringTheRenamesWaitsForThemAllAndSaysTheOutputsW
             std::exit(0); // not reached: the interrupt stops the program once the outputs are in place
         },
         ::testing::ExitedWithCode(1), "interrupted by Interrupt after its outputs were written");
-    EXPECT_EQ(Names(dir), kTargets) << "no temporary or backup file left";
+    EXPECT_EQ(FilesIn(dir), kTargets) << "no temporary or backup file left";
     for (int i = 0; i < kOutputs; ++i)
     {
         EXPECT_EQ(FileText(dir / kTargets[i]), "new " + std::to_string(i)) << "every output written";

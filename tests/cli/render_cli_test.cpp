@@ -23,17 +23,6 @@ std::string Bytes(const std::filesystem::path& path)
     return bytes.str();
 }
 
-std::vector<std::string> FilesIn(const std::filesystem::path& dir)
-{
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
-    {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 // Tiny, short renders keep these tests fast.
 const std::string kTiny = " --width 48 --height 32 ";
 

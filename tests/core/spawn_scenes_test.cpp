@@ -15,6 +15,27 @@ namespace cfx
 namespace
 {
 
+// Steps `entry`'s simulation `steps` times (the scene's own drive) and gives its stats.
+EffectsStats RunScene(const SceneEntry& entry, const SimulationDef& def, int steps)
+{
+    Simulation simulation(def);
+    for (int i = 0; i < steps; ++i)
+    {
+        StepScene(entry, simulation);
+    }
+    return simulation.GetEffects().Stats();
+}
+
+std::uint64_t Spawned(const EffectsStats& stats)
+{
+    std::uint64_t spawned = 0;
+    for (std::uint64_t n : stats.spawnedByType)
+    {
+        spawned += n;
+    }
+    return spawned;
+}
+
 } // namespace
 
 TEST(SpawnScenes, EverySceneFileIsRegistered)
@@ -51,18 +72,8 @@ TEST(SpawnScenes, NoParticleStartsInsideInAnyScene)
                 }
                 def.hz = hz;
                 def.particles.checkParticles = true; // audits every start (spawnedInsideSolid)
-                Simulation simulation(def);
-                const int steps = static_cast<int>(std::lround(8.0f * hz));
-                for (int i = 0; i < steps; ++i)
-                {
-                    StepScene(entry, simulation);
-                }
-                const EffectsStats& stats = simulation.GetEffects().Stats();
-                std::uint64_t spawned = 0;
-                for (std::uint64_t n : stats.spawnedByType)
-                {
-                    spawned += n;
-                }
+                const EffectsStats stats = RunScene(entry, def, static_cast<int>(std::lround(8.0f * hz)));
+                const std::uint64_t spawned = Spawned(stats);
                 EXPECT_GT(spawned, 100u);
                 EXPECT_EQ(stats.spawnedInsideSolid, 0u);
                 EXPECT_LT(stats.spawnRejected, spawned / 10) << "rejections are the exception";
@@ -86,18 +97,8 @@ TEST(SpawnScenes, TheSmallestRadiusKeepsEveryParticleOutside)
         }
         ASSERT_TRUE(Validate(def.config).empty());
         def.particles.checkParticles = true;
-        Simulation simulation(def);
-        for (int i = 0; i < 1200; ++i) // 20 s: the rockslide's rocks come down
-        {
-            StepScene(entry, simulation);
-        }
-        const EffectsStats& stats = simulation.GetEffects().Stats();
-        std::uint64_t spawned = 0;
-        for (std::uint64_t n : stats.spawnedByType)
-        {
-            spawned += n;
-        }
-        EXPECT_GT(spawned, 100u);
+        const EffectsStats stats = RunScene(entry, def, 1200); // 20 s: the rockslide's rocks come down
+        EXPECT_GT(Spawned(stats), 100u);
         EXPECT_EQ(stats.particleStepsInside, 0u);
         EXPECT_EQ(stats.crossings, 0u);
         EXPECT_EQ(stats.spawnedInsideSolid, 0u);
