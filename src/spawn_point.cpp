@@ -253,6 +253,10 @@ private:
     const BodyFilter* m_ignore;
 };
 
+// Two surface normals this close (cosine; 0.8 degrees) are one face's: the way between starts on it is
+// not cast.
+constexpr float kSameFace = 0.9999f;
+
 // What a start tried along the surface is.
 enum class Start : std::uint8_t
 {
@@ -368,10 +372,11 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
     float step = std::max(clearance, 0.01f);
     float reach = std::max(4.0f * clearance, 0.25f);
 
-    // The start each one is walked to from: the one at the contact (offset 0), then the last one tried.
+    // The start each one is walked to from, and the surface normal there: the one at the contact (offset
+    // 0), then the last one tried.
     const b2Vec2 lifted = query.point + clearance * query.normal;
-    b2Vec2 atContact = lifted;
-    b2Vec2 previous = lifted;
+    SpawnPoint atContact{lifted, query.normal, false};
+    SpawnPoint previous = atContact;
     float previousSide = 0.0f;
     SpawnPoint found = Walk(firstSide, step, query.searchDistance,
                             [&](float offset, SpawnPoint& start)
@@ -390,19 +395,22 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
                                 const float side = offset > 0.0f ? 1.0f : offset < 0.0f ? -1.0f : 0.0f;
                                 if (side == 0.0f)
                                 {
-                                    atContact = start.position;
+                                    atContact = start;
                                 }
                                 else if (side != previousSide)
                                 {
                                     previous = atContact; // the other side is walked from the contact too
                                 }
                                 previousSide = side;
-                                const b2Vec2 from = previous;
-                                previous = start.position;
-                                if (b2DistanceSquared(from, start.position) > 0.0f)
+                                const SpawnPoint from = previous;
+                                previous = start;
+                                // Along one face the way runs parallel to it, a start's height above it;
+                                // a start on another face (around a corner) may be behind something.
+                                if (b2Dot(from.normal, start.normal) < kSameFace &&
+                                    b2DistanceSquared(from.position, start.position) > 0.0f)
                                 {
                                     WayBlocked way(query.surface, query.otherBody, ignore);
-                                    world.RayCast(&way, from, start.position);
+                                    world.RayCast(&way, from.position, start.position);
                                     if (way.blocked)
                                     {
                                         return Start::closed;
