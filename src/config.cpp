@@ -3,6 +3,7 @@
 #include "contactfx/config_fields.h"
 #include "quoted_text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -238,7 +239,7 @@ std::pair<std::string_view, std::string_view> Unordered(std::string_view a, std:
 std::string PairName(std::string_view a, std::string_view b)
 {
     const auto [first, second] = Unordered(a, b);
-    return std::string(first) + "+" + std::string(second);
+    return detail::EscapedText(first) + "+" + detail::EscapedText(second); // one line whatever the names
 }
 
 // PairName(a, b) when `seen` already has the unordered pair {a, b}, else "" (and the pair is added).

@@ -7,7 +7,12 @@ namespace cfx::detail
 
 std::string QuotedText(std::string_view text)
 {
-    std::string quoted = "\"";
+    return "\"" + EscapedText(text) + "\"";
+}
+
+std::string EscapedText(std::string_view text)
+{
+    std::string quoted;
     for (const char c : text)
     {
         const auto byte = static_cast<unsigned char>(c);
@@ -41,7 +46,7 @@ std::string QuotedText(std::string_view text)
             }
         }
     }
-    return quoted + "\"";
+    return quoted;
 }
 
 } // namespace cfx::detail

@@ -11,5 +11,7 @@ namespace cfx::detail
 /// them ("a\nb" for a line break): a name read from a file can neither end its message early nor forge
 /// another line of it. Other bytes (UTF-8) are kept.
 std::string QuotedText(std::string_view text);
+/// The same without the surrounding quotes (a pair's name, "a+b").
+std::string EscapedText(std::string_view text);
 
 } // namespace cfx::detail

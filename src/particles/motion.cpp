@@ -77,12 +77,14 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // body's surface). The push is a motion like any other: it is swept through the static geometry, sliding
 // along what it meets (twice at most, the rest of the push is dropped), so it never carries the particle
 // into or through a static fixture. Returns false when the particle then still overlaps a moving fixture
-// by more than half its radius: squeezed with no free place, it is crushed. So it is when a moving body
-// passed over where it ends, unless it ends at a `target` the body `placed` it at: stopped by a wall on
-// the way, or pushed to where it met the body (a thin plate rising fast into a ceiling leaves the particle
-// held under the ceiling below it: it went through the plate).
-bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, bool placed,
-          b2Vec2& position)
+// by more than half its radius: squeezed with no free place, it is crushed. So it is when it went through
+// the body: it ends more than half its radius behind `placement` (where the body put it, on its surface,
+// and that surface's normal there, at the end of the step), and a moving body passed over where it ends
+// (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it).
+// `placed`: `target` is `placement`'s position, which a push that reaches it never went through. `spawned`:
+// the particle was put where it started after the bodies moved (they did not pass over anything of it).
+bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, const Touch& placement,
+          bool placed, bool spawned, b2Vec2& position)
 {
     b2Vec2 push = target - position;
     bool stopped = false; // by a wall: not where the body put it
@@ -103,8 +105,14 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
     }
     // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
-    return !geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius) &&
-           ((placed && !stopped) || !geometry.MovingPassesOver(position, side));
+    if (geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius))
+    {
+        return false;
+    }
+    // Behind the surface it met: on the body's far side, or under it (caught between it and a wall).
+    // Whether the body went over it, or it over the body: only the first leaves it there with no way out.
+    const bool behind = b2Dot(position - placement.position, placement.normal) < -0.5f * side.radius;
+    return (placed && !stopped) || spawned || !behind || !geometry.MovingPassesOver(position, side);
 }
 
 // Whether a disc at `position` overlaps a static shape by more than half its radius.
@@ -218,11 +226,11 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
         {
             // Where the body would put it; failing that (a wedge), where it met the body.
             const b2Vec2 free = position;
-            crushed = !Push(geometry, type.side, hit.touch.position, true, position);
+            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, true, spawned, position);
             if (crushed)
             {
                 position = free;
-                crushed = !Push(geometry, type.side, hit.firstTouch, false, position);
+                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, false, spawned, position);
             }
             KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =
