@@ -56,7 +56,10 @@ constexpr unsigned kGraceSeconds = 1;
 // signals blocked (WithSignalsBlocked).
 std::vector<std::pair<const void*, const char*>> g_temporaries;
 
-// Set once an OutputFiles has put its outputs in place: a signal from then on has nothing to undo.
+// Set while an OutputFiles renames its outputs into place: a signal then only notes itself, whichever
+// thread it lands on, and Commit stops the command once every output is in place. Set once it has: a
+// signal from then on has nothing to undo.
+volatile std::sig_atomic_t g_committing = 0;
 volatile std::sig_atomic_t g_committed = 0;
 
 // The signals stay pending while it lives (and are handled when it goes, an exception unwinding too).
@@ -100,6 +103,14 @@ extern "C" void OnSignal(int signal)
         Say(" after its outputs were written\n");
         ::_exit(1);
     }
+    if (g_committing != 0)
+    {
+        if (signal != SIGALRM && g_signal == 0)
+        {
+            g_signal = signal;
+        }
+        return;
+    }
     if (signal != SIGALRM && g_preparedOutputs == 0)
     {
         g_signal = signal; // stops at once
@@ -128,6 +139,7 @@ void InstallHandlers()
         return;
     }
     g_signal = 0;
+    g_committing = 0;
     g_committed = 0;
     for (int i = 0; i < 4; ++i)
     {
@@ -465,11 +477,16 @@ void OutputFiles::Commit()
         }
     }
     // Rename in order; on failure put back what was replaced (kept as hard links) and remove what was new.
-    // The last moment an interrupt leaves everything as it was; from here on the signals wait until every
-    // output is in place (or every replaced file is back), and then stop the command with a message that
-    // says so: never a part of the outputs written, never backups left behind.
+    // The last moment an interrupt leaves everything as it was; from here on a signal is only noted (on any
+    // thread: blocking signals would hold them on this one only) until every output is in place (or every
+    // replaced file is back), and then stops the command with a message that says so: never a part of the
+    // outputs written, never backups left behind.
+    g_committing = 1;
+    struct Committing
+    {
+        ~Committing() { g_committing = 0; }
+    } committing;
     CheckInterrupted();
-    const SignalsBlocked blocked;
     std::vector<fs::path> backups(m_outputs.size());
     std::size_t done = 0;
     for (; done < m_outputs.size(); ++done)
@@ -528,8 +545,14 @@ void OutputFiles::Commit()
         }
     }
     m_committed = true;
-    std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); // renamed
+    WithSignalsBlocked(
+        [&] { std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); });
     g_committed = 1;
+    if (g_signal != 0)
+    {
+        throw std::runtime_error(std::string("interrupted by ") + ::strsignal(g_signal) +
+                                 " after its outputs were written");
+    }
 }
 
 void OutputFiles::RemoveTemporaries()

@@ -91,10 +91,11 @@ public:
     /// Flushes and syncs every temporary file, checks the targets again, and renames them all into
     /// place, or none (see the file comment). Throws InputError naming the file that failed. An interrupt
     /// before the renames unwinds as in CheckInterrupted; one during them waits until they are done, then
-    /// stops the program (exit 1, "interrupted by ... after its outputs were written").
+    /// throws std::runtime_error ("interrupted by ... after its outputs were written"); one after them
+    /// stops the program with that message (exit 1).
     void Commit();
 
-    /// For tests: called in Commit before each rename, with the output's index, signals blocked.
+    /// For tests: called in Commit before each rename, with the output's index.
     void OnBeforeRename(std::function<void(std::size_t)> call) { m_beforeRename = std::move(call); }
 
 private:

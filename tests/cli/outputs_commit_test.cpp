@@ -7,9 +7,11 @@
 #include "outputs.h"
 
 #include <algorithm>
+#include <atomic>
 #include <csignal>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <thread>
 
 namespace cfx::cli
 {
@@ -53,28 +55,66 @@ void WriteOld(const fs::path& dir)
 
 const std::vector<std::string> kTargets{"f0.txt", "f1.txt", "f2.txt", "f3.txt", "f4.txt"};
 
+// The signal lands on this thread, or on another one (the CLI's particle threads, ffmpeg's feeder): a
+// re-check found the first fix, which blocked signals on the committing thread only, did nothing when the
+// signal went to another.
 TEST(OutputsCommit, AnInterruptDuringTheRenamesWaitsForThemAllAndSaysTheOutputsWereWritten)
 {
-    GTEST_FLAG_SET(death_test_style, "threadsafe");
-    const fs::path dir = ScratchDir("outputs_commit_interrupt");
-    WriteOld(dir);
-    EXPECT_EXIT(
+    for (const bool otherThread : {false, true})
+    {
+        SCOPED_TRACE(otherThread ? "signal on another thread" : "signal on the committing thread");
+        const fs::path dir =
+            ScratchDir(otherThread ? "outputs_commit_interrupt_other" : "outputs_commit_interrupt");
+        WriteOld(dir);
+        // Started before the commit, as the CLI's threads are, and told to raise the signal during it.
+        std::atomic<int> stage{0}; // 1: raise it; 2: raised
+        std::thread other(
+            [&]
+            {
+                while (stage.load() == 0)
+                {
+                    std::this_thread::yield();
+                }
+                if (stage.load() == 1)
+                {
+                    ::raise(SIGINT); // to this thread
+                    stage.store(2);
+                }
+            });
+        std::string message;
+        try
         {
             WriteAll(dir,
-                     [](std::size_t index)
+                     [&](std::size_t index)
                      {
-                         if (index == 1)
+                         if (index != 1)
                          {
-                             ::raise(SIGINT); // after the first rename: waits until the last is done
+                             return;
+                         }
+                         if (!otherThread)
+                         {
+                             ::raise(SIGINT); // after the first rename
+                             return;
+                         }
+                         stage.store(1);
+                         while (stage.load() != 2)
+                         {
+                             std::this_thread::yield();
                          }
                      });
-            std::exit(0); // not reached: the interrupt stops the program once the outputs are in place
-        },
-        ::testing::ExitedWithCode(1), "interrupted by Interrupt after its outputs were written");
-    EXPECT_EQ(FilesIn(dir), kTargets) << "no temporary or backup file left";
-    for (int i = 0; i < kOutputs; ++i)
-    {
-        EXPECT_EQ(FileText(dir / kTargets[i]), "new " + std::to_string(i)) << "every output written";
+        }
+        catch (const std::runtime_error& error)
+        {
+            message = error.what();
+        }
+        stage.store(3); // lets the other thread end if it was not asked
+        other.join();
+        EXPECT_EQ(message, "interrupted by Interrupt after its outputs were written");
+        EXPECT_EQ(FilesIn(dir), kTargets) << "no temporary or backup file left";
+        for (int i = 0; i < kOutputs; ++i)
+        {
+            EXPECT_EQ(FileText(dir / kTargets[i]), "new " + std::to_string(i)) << "every output written";
+        }
     }
 }
 
