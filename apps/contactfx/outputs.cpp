@@ -52,39 +52,25 @@ volatile std::sig_atomic_t g_preparedOutputs = 0;
 constexpr int kSignals[4] = {SIGINT, SIGTERM, SIGHUP, SIGALRM};
 struct sigaction g_previous[4];
 constexpr unsigned kGraceSeconds = 1;
-// The temporary files of the prepared outputs and their owners, for the handler; changed only with the
-// signals blocked (WithSignalsBlocked).
+// The temporary files of the prepared outputs and their owners, for the handler; changed only while
+// signals are only noted (SignalsNoted).
 std::vector<std::pair<const void*, const char*>> g_temporaries;
 
-// Set while an OutputFiles renames its outputs into place: a signal then only notes itself, whichever
-// thread it lands on, and Commit stops the command once every output is in place. Set once it has: a
-// signal from then on has nothing to undo.
-volatile std::sig_atomic_t g_committing = 0;
+// Above 0 while g_temporaries changes (Prepare creating the temporary files, an OutputFiles going) or an
+// OutputFiles renames its outputs into place: a signal then only notes itself, whichever thread it lands
+// on (blocking signals would hold them on one thread only), and the code that set it checks afterwards.
+volatile std::sig_atomic_t g_onlyNoted = 0;
+// Set once an OutputFiles has put its outputs in place: a signal from then on has nothing to undo.
 volatile std::sig_atomic_t g_committed = 0;
 
-// The signals stay pending while it lives (and are handled when it goes, an exception unwinding too).
-class SignalsBlocked
+class SignalsNoted
 {
 public:
-    SignalsBlocked()
-    {
-        sigset_t all;
-        sigfillset(&all);
-        ::pthread_sigmask(SIG_BLOCK, &all, &m_previous);
-    }
-    ~SignalsBlocked() { ::pthread_sigmask(SIG_SETMASK, &m_previous, nullptr); }
-    SignalsBlocked(const SignalsBlocked&) = delete;
-    SignalsBlocked& operator=(const SignalsBlocked&) = delete;
-
-private:
-    sigset_t m_previous;
+    SignalsNoted() { g_onlyNoted = g_onlyNoted + 1; }
+    ~SignalsNoted() { g_onlyNoted = g_onlyNoted - 1; }
+    SignalsNoted(const SignalsNoted&) = delete;
+    SignalsNoted& operator=(const SignalsNoted&) = delete;
 };
-
-template <class Change> void WithSignalsBlocked(Change&& change)
-{
-    const SignalsBlocked blocked;
-    change();
-}
 
 void Say(const char* text)
 {
@@ -103,7 +89,7 @@ extern "C" void OnSignal(int signal)
         Say(" after its outputs were written\n");
         ::_exit(1);
     }
-    if (g_committing != 0)
+    if (g_onlyNoted != 0)
     {
         if (signal != SIGALRM && g_signal == 0)
         {
@@ -139,7 +125,7 @@ void InstallHandlers()
         return;
     }
     g_signal = 0;
-    g_committing = 0;
+    g_onlyNoted = 0;
     g_committed = 0;
     for (int i = 0; i < 4; ++i)
     {
@@ -180,15 +166,17 @@ OutputFiles::OutputFiles() = default;
 
 OutputFiles::~OutputFiles()
 {
-    WithSignalsBlocked(
-        [&] { std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); });
+    {
+        const SignalsNoted noted;
+        std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; });
+    }
     if (!m_committed)
     {
         RemoveTemporaries();
     }
     if (m_prepared)
     {
-        WithSignalsBlocked([] { g_preparedOutputs = g_preparedOutputs - 1; });
+        g_preparedOutputs = g_preparedOutputs - 1;
         RestoreHandlers();
     }
 }
@@ -311,40 +299,55 @@ void OutputFiles::Prepare()
 
     m_prepared = true;
     InstallHandlers();
-    WithSignalsBlocked([] { g_preparedOutputs = g_preparedOutputs + 1; });
-    for (Output& output : m_outputs)
+    g_preparedOutputs = g_preparedOutputs + 1;
     {
-        // A file that replaces another has its mode from the start: what it holds while the command runs
-        // is no more readable than what it replaces (Commit sets the mode again, in case it changed).
-        struct stat existing = {};
-        const bool replaces = !output.scratch && ::stat(output.real.c_str(), &existing) == 0;
-        const mode_t mode = replaces ? (existing.st_mode & 07777) : 0666;
-        int descriptor = -1;
-        for (int attempt = 0; attempt < 16 && descriptor < 0; ++attempt)
+        // A signal while the temporary files are made is noted, and the check below unwinds: they are
+        // removed with the object (RemoveTemporaries), those not yet listed for the handler too.
+        const SignalsNoted noted;
+        for (std::size_t index = 0; index < m_outputs.size(); ++index)
         {
-            output.temporary = Beside(output.real, ".tmp-");
-            descriptor = ::open(output.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
-                                replaces ? 0600 : mode);
-            if (descriptor < 0 && errno != EEXIST)
+            CreateTemporary(m_outputs[index]);
+            if (m_testHook)
             {
-                const int error = errno;
-                output.temporary.clear();
-                Fail(output, "cannot write: " + Strerror(error));
+                m_testHook(FileStep::prepared, index);
             }
         }
-        if (descriptor < 0)
-        {
-            output.temporary.clear();
-            Fail(output, "cannot write: no free temporary file name");
-        }
-        if (replaces)
-        {
-            ::fchmod(descriptor, mode);
-        }
-        ::close(descriptor);
-        // Its name stays in this buffer until the object goes (cleared, never reallocated).
-        WithSignalsBlocked([&] { g_temporaries.emplace_back(this, output.temporary.c_str()); });
     }
+    CheckInterrupted();
+}
+
+void OutputFiles::CreateTemporary(Output& output)
+{
+    // A file that replaces another has its mode from the start: what it holds while the command runs
+    // is no more readable than what it replaces (Commit sets the mode again, in case it changed).
+    struct stat existing = {};
+    const bool replaces = !output.scratch && ::stat(output.real.c_str(), &existing) == 0;
+    const mode_t mode = replaces ? (existing.st_mode & 07777) : 0666;
+    int descriptor = -1;
+    for (int attempt = 0; attempt < 16 && descriptor < 0; ++attempt)
+    {
+        output.temporary = Beside(output.real, ".tmp-");
+        descriptor =
+            ::open(output.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, replaces ? 0600 : mode);
+        if (descriptor < 0 && errno != EEXIST)
+        {
+            const int error = errno;
+            output.temporary.clear();
+            Fail(output, "cannot write: " + Strerror(error));
+        }
+    }
+    if (descriptor < 0)
+    {
+        output.temporary.clear();
+        Fail(output, "cannot write: no free temporary file name");
+    }
+    if (replaces)
+    {
+        ::fchmod(descriptor, mode);
+    }
+    ::close(descriptor);
+    // Its name stays in this buffer until the object goes (cleared, never reallocated).
+    g_temporaries.emplace_back(this, output.temporary.c_str());
 }
 
 const fs::path& OutputFiles::Temporary(Handle output) const
@@ -481,11 +484,7 @@ void OutputFiles::Commit()
     // thread: blocking signals would hold them on this one only) until every output is in place (or every
     // replaced file is back), and then stops the command with a message that says so: never a part of the
     // outputs written, never backups left behind.
-    g_committing = 1;
-    struct Committing
-    {
-        ~Committing() { g_committing = 0; }
-    } committing;
+    const SignalsNoted noted;
     CheckInterrupted();
     std::vector<fs::path> backups(m_outputs.size());
     std::size_t done = 0;
@@ -506,9 +505,9 @@ void OutputFiles::Commit()
                 backups[done] = backup;
             }
         }
-        if (m_beforeRename)
+        if (m_testHook)
         {
-            m_beforeRename(done);
+            m_testHook(FileStep::renaming, done);
         }
         if (::rename(output.temporary.c_str(), output.real.c_str()) != 0)
         {
@@ -545,8 +544,7 @@ void OutputFiles::Commit()
         }
     }
     m_committed = true;
-    WithSignalsBlocked(
-        [&] { std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; }); });
+    std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; });
     g_committed = 1;
     if (g_signal != 0)
     {

@@ -95,8 +95,13 @@ public:
     /// stops the program with that message (exit 1).
     void Commit();
 
-    /// For tests: called in Commit before each rename, with the output's index.
-    void OnBeforeRename(std::function<void(std::size_t)> call) { m_beforeRename = std::move(call); }
+    /// For tests: where a step over the outputs is, with the output's index.
+    enum class FileStep : std::uint8_t
+    {
+        prepared, ///< Prepare made its temporary file
+        renaming, ///< Commit is about to rename it into place
+    };
+    void OnEachFile(std::function<void(FileStep, std::size_t)> call) { m_testHook = std::move(call); }
 
 private:
     struct Output
@@ -114,6 +119,8 @@ private:
     // Opens the temporary file with `mode`, writes `bytes` at `offset`, closes it; Fail()s on error.
     void PutBytes(const Output& output, const char* mode, std::uint64_t offset, std::string_view bytes) const;
     void CloseStream(Output& output, bool check);
+    void
+    CreateTemporary(Output& output); ///< Prepare: the hidden file beside the target, listed for the handler
     void RemoveTemporaries();
 
     std::vector<std::filesystem::path> m_inputs;
@@ -121,7 +128,7 @@ private:
     std::vector<Diagnostic> m_refused; ///< Refuse()'s problems
     bool m_prepared = false;
     bool m_committed = false;
-    std::function<void(std::size_t)> m_beforeRename; ///< OnBeforeRename
+    std::function<void(FileStep, std::size_t)> m_testHook; ///< OnEachFile
 };
 
 /// Called once, first thing in main: SIGINT, SIGTERM and SIGHUP before any OutputFiles is prepared (a

@@ -41,7 +41,14 @@ void WriteAll(const fs::path& dir, const std::function<void(std::size_t)>& befor
     {
         outputs.Write(handles[i], "new " + std::to_string(i));
     }
-    outputs.OnBeforeRename(beforeRename);
+    outputs.OnEachFile(
+        [&](OutputFiles::FileStep step, std::size_t index)
+        {
+            if (step == OutputFiles::FileStep::renaming)
+            {
+                beforeRename(index);
+            }
+        });
     outputs.Commit();
 }
 
@@ -115,6 +122,67 @@ TEST(OutputsCommit, AnInterruptDuringTheRenamesWaitsForThemAllAndSaysTheOutputsW
         {
             EXPECT_EQ(FileText(dir / kTargets[i]), "new " + std::to_string(i)) << "every output written";
         }
+    }
+}
+
+// The handler reads the list of temporary files, which Prepare grows: a signal landing on another thread
+// then could read it while it moved (a second signal makes the handler remove the files it lists and exit at
+// once). While Prepare makes the files a signal is only noted, even a second one, and Prepare then unwinds,
+// leaving no file.
+TEST(OutputsCommit, AnInterruptWhilePreparingOnAnotherThreadLeavesNoFile)
+{
+    const fs::path dir = ScratchDir("outputs_prepare_interrupt");
+    WriteOld(dir);
+    std::atomic<int> stage{0}; // 1: raise it; 2: raised; 3: done
+    std::thread other(
+        [&]
+        {
+            while (stage.load() == 0)
+            {
+                std::this_thread::yield();
+            }
+            if (stage.load() == 1)
+            {
+                ::raise(SIGINT);
+                ::raise(SIGINT);
+                stage.store(2);
+            }
+        });
+    std::string message;
+    {
+        OutputFiles outputs;
+        for (int i = 0; i < kOutputs; ++i)
+        {
+            outputs.Add("--out", dir / ("f" + std::to_string(i) + ".txt"));
+        }
+        outputs.OnEachFile(
+            [&](OutputFiles::FileStep step, std::size_t index)
+            {
+                if (step == OutputFiles::FileStep::prepared && index == 1)
+                {
+                    stage.store(1);
+                    while (stage.load() != 2)
+                    {
+                        std::this_thread::yield();
+                    }
+                }
+            });
+        try
+        {
+            outputs.Prepare();
+        }
+        catch (const std::runtime_error& error)
+        {
+            message = error.what();
+        }
+    }
+    stage.store(3);
+    other.join();
+    EXPECT_EQ(message, "interrupted by Interrupt: no output written");
+    EXPECT_EQ(FilesIn(dir), kTargets) << "no temporary file left";
+    for (int i = 0; i < kOutputs; ++i)
+    {
+        EXPECT_EQ(FileText(dir / kTargets[i]), "old " + std::to_string(i));
     }
 }
 
