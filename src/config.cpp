@@ -1,10 +1,10 @@
 #include "contactfx/config.h"
 
 #include "contactfx/config_fields.h"
+#include "float_text.h"
 #include "quoted_text.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -45,17 +45,6 @@ namespace
 // their ranges, enums against their names, names against the config. docs/effects-config.md shows the same
 // rows, and a test keeps the two in step.
 
-std::string FormatNumber(float value)
-{
-    if (std::isnan(value))
-    {
-        return "NaN";
-    }
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
 // Collects diagnostics with paths built from a prefix.
 class Checker
 {
@@ -74,7 +63,7 @@ public:
         {
             return;
         }
-        Fail(path, "expected " + ExpectedNumber(range) + ", found " + FormatNumber(value));
+        Fail(path, "expected " + ExpectedNumber(range) + ", found " + detail::FloatText(value));
     }
     // An integer within `range` (whose bounds are whole numbers).
     void Integer(const std::string& path, std::uint32_t value, const FieldRange& range)
@@ -195,8 +184,8 @@ void CheckFields(Checker& check, const std::string& at, const S& value, std::spa
                         !(*number > *lower))
                     {
                         check.Fail(path, "expected a number > " + std::string(field.greaterThan) + " (" +
-                                             FormatNumber(*lower) + "), found " + FormatNumber(*number) +
-                                             " (no value would match)");
+                                             detail::FloatText(*lower) + "), found " +
+                                             detail::FloatText(*number) + " (no value would match)");
                     }
                 }
                 else if constexpr (std::is_same_v<M, std::string S::*>)

@@ -7,8 +7,9 @@
 // fields are checked and read (enums after the plain fields, as the reader has always reported them).
 #include "contactfx/config_fields.h"
 
+#include "float_text.h"
+
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -29,13 +30,9 @@ std::string ExpectedInteger(const FieldRange& range)
 
 std::string ExpectedNumber(const FieldRange& range)
 {
-    const auto text = [](float value)
-    {
-        char buffer[32];
-        return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-    };
-    return range.minExclusive ? "a number > " + text(range.min) + " and <= " + text(range.max)
-                              : "a number between " + text(range.min) + " and " + text(range.max);
+    using detail::FloatText;
+    return range.minExclusive ? "a number > " + FloatText(range.min) + " and <= " + FloatText(range.max)
+                              : "a number between " + FloatText(range.min) + " and " + FloatText(range.max);
 }
 
 std::string_view ExpectedText(TextRule rule)

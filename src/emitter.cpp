@@ -1,5 +1,6 @@
 #include "emitter.h"
 
+#include "body_box.h"
 #include "particle_system_access.h"
 
 #include <algorithm>
@@ -57,18 +58,7 @@ float SearchDistance(const b2Body& other)
 {
     constexpr float kLeast = 1.0f;
     constexpr float kBeyond = 0.1f;
-    const float inf = std::numeric_limits<float>::infinity();
-    b2AABB box{b2Vec2(inf, inf), b2Vec2(-inf, -inf)};
-    for (const b2Fixture* fixture = other.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
-    {
-        const b2Shape& shape = *fixture->GetShape();
-        for (int child = 0; child < shape.GetChildCount(); ++child)
-        {
-            b2AABB part;
-            shape.ComputeAABB(&part, other.GetTransform(), child);
-            box.Combine(part);
-        }
-    }
+    const b2AABB box = detail::BodyBox(other);
     const b2Vec2 extent = box.upperBound - box.lowerBound;
     const float across = std::max(extent.x, extent.y) + kBeyond;
     return std::isfinite(across) ? std::max(kLeast, across) : kLeast;

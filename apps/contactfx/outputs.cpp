@@ -78,15 +78,26 @@ void Say(const char* text)
     static_cast<void>(ignored);
 }
 
+// "contactfx: error: interrupted by Interrupt" and `ending`, as a signal handler may write it.
+void SayInterrupted(int signal, const char* ending)
+{
+    Say("contactfx: error: interrupted by ");
+    Say(signal == SIGINT ? "Interrupt" : signal == SIGTERM ? "Terminated" : "Hangup");
+    Say(ending);
+}
+
+// Takes `owner`'s temporary files off the handler's list (they are renamed, or being removed).
+void Unlist(const void* owner)
+{
+    std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == owner; });
+}
+
 extern "C" void OnSignal(int signal)
 {
     if (g_committed != 0)
     {
         // The outputs are all in place (the signal waited while they were put there): nothing to undo.
-        const int first = g_signal != 0 ? g_signal : signal;
-        Say("contactfx: error: interrupted by ");
-        Say(first == SIGINT ? "Interrupt" : first == SIGTERM ? "Terminated" : "Hangup");
-        Say(" after its outputs were written\n");
+        SayInterrupted(g_signal != 0 ? g_signal : signal, " after its outputs were written\n");
         ::_exit(1);
     }
     if (g_onlyNoted != 0)
@@ -111,10 +122,7 @@ extern "C" void OnSignal(int signal)
     {
         ::unlink(temporary);
     }
-    const int first = g_signal;
-    Say("contactfx: error: interrupted by ");
-    Say(first == SIGINT ? "Interrupt" : first == SIGTERM ? "Terminated" : "Hangup");
-    Say(": no output written\n");
+    SayInterrupted(g_signal, ": no output written\n");
     ::_exit(1);
 }
 
@@ -168,7 +176,7 @@ OutputFiles::~OutputFiles()
 {
     {
         const SignalsNoted noted;
-        std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; });
+        Unlist(this);
     }
     if (!m_committed)
     {
@@ -544,7 +552,7 @@ void OutputFiles::Commit()
         }
     }
     m_committed = true;
-    std::erase_if(g_temporaries, [&](const auto& entry) { return entry.first == this; });
+    Unlist(this); // renamed
     g_committed = 1;
     if (g_signal != 0)
     {

@@ -1,6 +1,8 @@
 // Camera placement: following a body and fitting the world's fixtures into view.
 #include "contactfx/draw/camera.h"
 
+#include "body_box.h"
+
 #include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
@@ -24,18 +26,9 @@ struct Bounds
 
     void Add(const b2Body& body)
     {
-        for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr;
-             fixture = fixture->GetNext())
-        {
-            const b2Shape* shape = fixture->GetShape();
-            for (int32 child = 0; child < shape->GetChildCount(); ++child)
-            {
-                b2AABB box;
-                shape->ComputeAABB(&box, body.GetTransform(), child);
-                lower = b2Min(lower, box.lowerBound);
-                upper = b2Max(upper, box.upperBound);
-            }
-        }
+        const b2AABB box = detail::BodyBox(body);
+        lower = b2Min(lower, box.lowerBound);
+        upper = b2Max(upper, box.upperBound);
     }
 };
 

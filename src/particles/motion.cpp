@@ -80,14 +80,13 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // by more than half its radius: squeezed with no free place, it is crushed. So it is when it went through
 // the body: it ends more than half its radius behind `placement` (where the body put it, on its surface,
 // and that surface's normal there, at the end of the step), and a moving body passed over where it ends
-// (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it).
-// `placed`: `target` is `placement`'s position, which a push that reaches it never went through. `spawned`:
-// the particle was put where it started after the bodies moved (they did not pass over anything of it).
+// (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it). A push to
+// `placement` itself that no wall stops ends on it, never behind. `spawned`: the particle was put where it
+// started after the bodies moved (they did not pass over anything of it).
 bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, const Touch& placement,
-          bool placed, bool spawned, b2Vec2& position)
+          bool spawned, b2Vec2& position)
 {
     b2Vec2 push = target - position;
-    bool stopped = false; // by a wall: not where the body put it
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
@@ -97,7 +96,6 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
             position += push;
             break;
         }
-        stopped = true;
         position = wall.touch.position;
         // Slide: what is left of the push, less its part into the wall.
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
@@ -112,7 +110,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
     // Behind the surface it met: on the body's far side, or under it (caught between it and a wall).
     // Whether the body went over it, or it over the body: only the first leaves it there with no way out.
     const bool behind = b2Dot(position - placement.position, placement.normal) < -0.5f * side.radius;
-    return (placed && !stopped) || spawned || !behind || !geometry.MovingPassesOver(position, side);
+    return spawned || !behind || !geometry.MovingPassesOver(position, side);
 }
 
 // Whether a disc at `position` overlaps a static shape by more than half its radius.
@@ -226,11 +224,11 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
         {
             // Where the body would put it; failing that (a wedge), where it met the body.
             const b2Vec2 free = position;
-            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, true, spawned, position);
+            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, spawned, position);
             if (crushed)
             {
                 position = free;
-                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, false, spawned, position);
+                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, position);
             }
             KeepHarder(hit, velocity, type.side.radius, hardest);
             velocity =
