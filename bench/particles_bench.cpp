@@ -14,13 +14,20 @@
 // steps as `contactfx bench debris` (the pool is full by then): each iteration is one whole step (world.Step,
 // Effects::Step and the dropper, which costs a few microseconds every third step), with counters world_ms and
 // effects_ms (each part's time per step) and effects_over_world (the ratio of their sums).
+//
+// ChainGround/N/0 and ChainGround/N/1: 20 steel boxes dragged at 6 m/s along a static ground of N vertices
+// 0.2 m apart, as one chain (0) or as N - 1 edge fixtures (1); each iteration is one Effects::Step (the world
+// step is not timed). The same ground either way: the time should not grow with N for a chain.
 #include "particles/world_geometry.h"
 #include "scenes/debris_bench.h"
 #include "scenes/particle_bench.h"
 
 #include <benchmark/benchmark.h>
+#include <box2d/box2d.h>
 #include <chrono>
 #include <cmath>
+#include <contactfx/effects.h>
+#include <contactfx/presets.h>
 #include <vector>
 
 namespace
@@ -146,6 +153,77 @@ void Debris(benchmark::State& state)
     state.counters["live"] = scene.Fx().Stats().live;
 }
 
+void ChainGround(benchmark::State& state)
+{
+    const auto vertices = static_cast<int>(state.range(0));
+    const bool asEdges = state.range(1) != 0;
+    b2World world(b2Vec2(0.0f, -10.0f));
+    std::vector<b2Vec2> points(static_cast<std::size_t>(vertices));
+    for (int i = 0; i < vertices; ++i)
+    {
+        // Right to left, so that the chain's front (its right side) faces up.
+        points[static_cast<std::size_t>(vertices - 1 - i)].Set(
+            -0.1f * static_cast<float>(vertices - 1) + 0.2f * static_cast<float>(i), 0.0f);
+    }
+    b2BodyDef groundDef;
+    b2Body* ground = world.CreateBody(&groundDef);
+    b2ChainShape chain;
+    chain.CreateChain(points.data(), vertices, points.front() + b2Vec2(0.2f, 0.0f),
+                      points.back() - b2Vec2(0.2f, 0.0f));
+    if (asEdges)
+    {
+        for (int child = 0; child < chain.GetChildCount(); ++child)
+        {
+            b2EdgeShape edge;
+            chain.GetChildEdge(&edge, child);
+            ground->CreateFixture(&edge, 0.0f);
+        }
+    }
+    else
+    {
+        ground->CreateFixture(&chain, 0.0f);
+    }
+    std::vector<b2Body*> boxes;
+    for (int i = 0; i < 20; ++i)
+    {
+        b2BodyDef boxDef;
+        boxDef.type = b2_dynamicBody;
+        boxDef.position.Set(-50.0f + 5.0f * static_cast<float>(i), 0.2f);
+        b2Body* box = world.CreateBody(&boxDef);
+        b2PolygonShape shape;
+        shape.SetAsBox(0.3f, 0.2f);
+        box->CreateFixture(&shape, 8.0f)->SetFriction(0.4f);
+        boxes.push_back(box);
+    }
+    cfx::Effects fx(world, cfx::EffectsDef{cfx::DefaultPreset()});
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    for (b2Body* box : boxes)
+    {
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+    }
+    const auto step = [&]
+    {
+        for (b2Body* box : boxes)
+        {
+            box->SetLinearVelocity(b2Vec2(6.0f, box->GetLinearVelocity().y));
+        }
+        world.Step(1.0f / 60.0f, 8, 3);
+    };
+    for (int i = 0; i < 60; ++i)
+    {
+        step();
+        fx.Step(1.0f / 60.0f);
+    }
+    for (auto _ : state)
+    {
+        state.PauseTiming();
+        step();
+        state.ResumeTiming();
+        fx.Step(1.0f / 60.0f);
+    }
+    state.counters["live"] = fx.Stats().live;
+}
+
 } // namespace
 
 BENCHMARK(StaticScan);
@@ -161,5 +239,9 @@ BENCHMARK(Bodies)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(20);
 BENCHMARK(Debris)->Arg(200)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(ChainGround)
+    ->ArgsProduct({{1000, 20000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(300); // 5 s: the boxes stay on the shortest ground
 
 BENCHMARK_MAIN();

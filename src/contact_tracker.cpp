@@ -63,18 +63,22 @@ void ContactTracker::Reserve(std::uint32_t contacts)
     m_endingPairs.reserve(contacts);
 }
 
-void ContactTracker::Track(b2Contact* contact, bool firstTouch)
+TrackedContact* ContactTracker::Track(b2Contact* contact)
 {
-    if (IsTracked(contact) || !IsSolid(contact))
+    if (std::uint64_t* value = m_index.Find(contact))
     {
-        return;
+        return &m_byRule[UnpackRule(*value).index][UnpackSlot(*value)];
+    }
+    if (!IsSolid(contact))
+    {
+        return nullptr;
     }
     MaterialId materialA = m_materials.Get(contact->GetFixtureA());
     MaterialId materialB = m_materials.Get(contact->GetFixtureB());
     RuleId rule = m_rules.Find(materialA, materialB);
     if (!rule.IsValid())
     {
-        return;
+        return nullptr;
     }
     std::vector<TrackedContact>& list = m_byRule[rule.index];
     TrackedContact tracked;
@@ -83,14 +87,11 @@ void ContactTracker::Track(b2Contact* contact, bool firstTouch)
     tracked.swapped = m_rules.FirstMaterial(rule) != materialA;
     tracked.id = m_nextId++;
     tracked.beganStep = m_step;
-    if (firstTouch)
-    {
-        RecordApproach(contact, tracked);
-    }
     tracked.pair = FindOrAddPair(contact, rule);
     m_pairs[tracked.pair].contacts += 1;
     m_index.Set(contact, Pack(rule, list.size()));
     list.push_back(tracked);
+    return &list.back();
 }
 
 std::uint32_t ContactTracker::FindOrAddPair(b2Contact* contact, RuleId rule)
@@ -321,37 +322,53 @@ const b2Fixture* ContactTracker::RuleFixtureB(const TrackedContact& tracked) con
     return tracked.swapped ? tracked.contact->GetFixtureA() : tracked.contact->GetFixtureB();
 }
 
-void ContactTracker::RecordApproach(b2Contact* contact, TrackedContact& tracked)
+void ContactTracker::NoteTouches(b2Contact* contact, const b2Manifold& oldManifold, TrackedContact& tracked)
 {
-    const b2Manifold* manifold = contact->GetManifold();
-    if (manifold->pointCount < 1)
+    if (!contact->IsEnabled())
     {
+        // Disabled by the application: it did not touch, nor did an earlier piece of the step (continuous
+        // collision calls PreSolve again) that this one undoes.
+        tracked.disabled = true;
+        tracked.newTouch = false;
         return;
     }
+    const b2Manifold* manifold = contact->GetManifold();
+    b2PointState before[b2_maxManifoldPoints];
+    b2PointState now[b2_maxManifoldPoints];
+    b2GetPointStates(before, now, &oldManifold, manifold);
+    const bool allNew = tracked.disabled;
+    tracked.disabled = false;
     b2WorldManifold world;
-    contact->GetWorldManifold(&world);
+    bool measured = false;
     const b2Body* bodyA = contact->GetFixtureA()->GetBody();
     const b2Body* bodyB = contact->GetFixtureB()->GetBody();
-    tracked.newTouch = true;
-    tracked.approachNormal = world.normal;
-    tracked.approachSpeed = -1.0f;
     for (int i = 0; i < manifold->pointCount; ++i)
     {
+        if (!allNew && now[i] != b2_addState)
+        {
+            continue;
+        }
+        if (!measured)
+        {
+            contact->GetWorldManifold(&world);
+            measured = true;
+        }
         const b2Vec2 relative = bodyA->GetLinearVelocityFromWorldPoint(world.points[i]) -
                                 bodyB->GetLinearVelocityFromWorldPoint(world.points[i]);
-        const float approach = b2Dot(relative, world.normal); // > 0: A moves toward B
-        if (approach > tracked.approachSpeed)
+        const float approach = std::max(b2Dot(relative, world.normal), 0.0f); // > 0: A moves toward B
+        if (!tracked.newTouch || approach > tracked.approachSpeed)
         {
+            tracked.newTouch = true;
             tracked.approachSpeed = approach;
             tracked.approachPoint = world.points[i];
+            tracked.approachNormal = world.normal;
         }
     }
-    tracked.approachSpeed = std::max(tracked.approachSpeed, 0.0f);
 }
 
 void ContactTracker::BeginContact(b2Contact* contact)
 {
-    Track(contact, true);
+    Track(contact);
     if (m_forward != nullptr)
     {
         m_forward->BeginContact(contact);
@@ -372,10 +389,18 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
     // Box2D calls PreSolve only for touching, non-sensor contacts: a fixture that stopped being a
     // sensor while touching comes back into tracking here, since no new BeginContact will come.
     m_solved = true;
-    Track(contact, false);
+    TrackedContact* tracked = Track(contact);
     if (m_forward != nullptr)
     {
         m_forward->PreSolve(contact, oldManifold);
+        // It may have changed what is tracked (SetMaterial ends contacts): look again.
+        std::uint64_t* value = m_index.Find(contact);
+        tracked = value != nullptr ? &m_byRule[UnpackRule(*value).index][UnpackSlot(*value)] : nullptr;
+    }
+    // After the application's PreSolve, which may disable the contact.
+    if (tracked != nullptr)
+    {
+        NoteTouches(contact, *oldManifold, *tracked);
     }
 }
 

@@ -2,11 +2,15 @@
 //
 // The tracker is the b2ContactListener that Effects installs on the world. For each rule it keeps the
 // touching contacts whose two fixtures' materials select that rule, in a dense array (insertion order,
-// swap-remove), plus the PostSolve normal impulses of each manifold point and, for a first touch, the
-// approach speed before the solver. Callbacks only record what Box2D reported: the world is locked while
-// they run. Every callback is forwarded, unchanged, to the application's own listener when it has one,
-// after contactfx has recorded it. The tracker makes no effect and no event: the emitter (particles) and
-// the event tracker (src/events.h: scrapes, impacts, their ids) read what it recorded after the step.
+// swap-remove), plus the PostSolve normal impulses of each manifold point and, for a new touch, the
+// approach speed before the solver. A new touch is a manifold point that was not in the contact's manifold
+// at its last enabled PreSolve: the first touch, a second corner coming down onto the same fixture (which a
+// chain would report as a new contact on the next segment), or the first step a contact the application
+// disabled is let through (a disabled contact has not touched: a one-way platform passed from below).
+// Callbacks only record what Box2D reported: the world is locked while they run. Every callback is forwarded,
+// unchanged, to the application's own listener when it has one, after contactfx has recorded it. The tracker
+// makes no effect and no event: the emitter (particles) and the event tracker (src/events.h: scrapes,
+// impacts, their ids) read what it recorded after the step.
 //
 // Contacts of one rule between the same two bodies form one body pair (TrackedPair): one sliding contact
 // however many fixtures, chain segments or manifold points it spans. Whatever must survive a contact
@@ -64,10 +68,12 @@ struct TrackedContact
     std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
 
-    // The first touch (BeginContact with a manifold point), the stuff of impacts (events.h).
-    bool newTouch = false;             ///< began touching since the last EndStep, approach recorded
-    float approachSpeed = 0.0f;        ///< m/s along the normal at BeginContact, before the solver, >= 0
-    b2Vec2 approachPoint{0.0f, 0.0f};  ///< m, world: the manifold point approaching fastest
+    // New touches (manifold points new since the last enabled PreSolve, see the file comment), the stuff
+    // of impacts (events.h).
+    bool newTouch = false;             ///< a point began touching since the last EndStep, approach recorded
+    bool disabled = true;              ///< not enabled at its last PreSolve (or none yet): every point is new
+    float approachSpeed = 0.0f;        ///< m/s along the normal in PreSolve, before the solver, >= 0
+    b2Vec2 approachPoint{0.0f, 0.0f};  ///< m, world: the new point approaching fastest
     b2Vec2 approachNormal{0.0f, 0.0f}; ///< unit, from the contact's fixture A to fixture B
 };
 
@@ -167,9 +173,11 @@ public:
     void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
 
 private:
-    void Track(b2Contact* contact, bool firstTouch);
+    /// The contact's tracking, begun now if it is solid and its materials select a rule; else null.
+    TrackedContact* Track(b2Contact* contact);
     void Untrack(b2Contact* contact, ScrapeEnd reason);
-    void RecordApproach(b2Contact* contact, TrackedContact& tracked);
+    /// After the application's PreSolve: notes the contact's new touches (see the file comment).
+    void NoteTouches(b2Contact* contact, const b2Manifold& oldManifold, TrackedContact& tracked);
     std::uint32_t FindOrAddPair(b2Contact* contact, RuleId rule);
 
     const RuleTable& m_rules;

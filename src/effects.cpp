@@ -235,6 +235,12 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 void Effects::Step(float dt)
 {
     // Checked before anything changes (the particle system checks again, for its own users).
+    if (m_internals->notifying)
+    {
+        throw InputError("<api>", "listener",
+                         "Effects::Step called from the event listener: it is handing on the events of the "
+                         "step that called it");
+    }
     detail::CheckStepTime(dt);
     if (!m_world.GetGravity().IsValid())
     {
@@ -308,10 +314,13 @@ void Effects::NotifyListener()
         bool& notifying;
         ~Done() { notifying = false; }
     } done{m_internals->notifying};
-    // By index: the listener may end the scrapes (EndScrapes), which appends to the events.
-    for (std::size_t i = 0; i < m_internals->events.Events().size(); ++i)
+    // By index, each event copied: the listener may end the scrapes (EndScrapes), which appends to the
+    // events and may move them; and it may replace or remove itself (SetEventListener), which takes effect
+    // from the next event.
+    for (std::size_t i = 0; i < m_internals->events.Events().size() && m_eventListener != nullptr; ++i)
     {
-        m_eventListener->OnEffectEvent(m_internals->events.Events()[i]);
+        const EffectEvent event = m_internals->events.Events()[i];
+        m_eventListener->OnEffectEvent(event);
     }
 }
 

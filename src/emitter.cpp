@@ -140,6 +140,7 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStar
     // with both manifold points at most.
     m_pairSteps.reserve(config.budget.contacts);
     m_emissionCarry.reserve(config.budget.contacts);
+    m_capSpent.reserve(config.budget.contacts);
     m_order.reserve(config.budget.contacts);
     m_samples.reserve(std::size_t{2} * config.budget.contacts);
 }
@@ -151,11 +152,13 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
     {
         m_pairSteps.resize(tracker.PairSlots());
         m_emissionCarry.resize(tracker.PairSlots());
+        m_capSpent.resize(tracker.PairSlots());
     }
     // A slot whose pair ended owes nothing to the next pair that takes it.
     for (const EndedPair& ended : tracker.EndedPairs())
     {
         m_emissionCarry[ended.slot] = 0.0f;
+        m_capSpent[ended.slot] = 0.0f;
     }
     // Box2D calls PreSolve for every touching contact with an awake body in every world step: none since
     // the last step while a tracked contact has an awake body means the world did not step (a paused
@@ -311,6 +314,8 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
             Burst(context, tracked);
         }
     }
+    // The rate cap's allowance refills with time, asleep or not.
+    m_capSpent[pairSlot] = std::max(m_capSpent[pairSlot] - rule.maxRate * context.dt, 0.0f);
     if (step.asleep)
     {
         context.events.Asleep(pairSlot);
@@ -414,11 +419,19 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
     {
         return;
     }
-    const float rate = std::min(rule.maxRate, rule.ratePerIntensity * (intensity - rule.threshold));
+    // The cap holds over time (a token bucket): the pair's allowance refills at maxRate up to the
+    // window's worth (UpdatePair), and each particle spends one. Cut per step, a landing's one-step
+    // pressure spike gave maxRate * dt: fewer particles the higher the step rate.
+    float& spent = m_capSpent[pairSlot];
+    const float allowance = std::max(rule.maxRate * std::max(kMaxRateWindow, context.dt) - spent, 0.0f);
+    const float rate = rule.ratePerIntensity * (intensity - rule.threshold);
     float& emissionCarry = m_emissionCarry[pairSlot];
     const float owed = emissionCarry + rate * context.dt;
-    // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
-    const int count = Budgeted(owed, context.stats);
+    // At most the allowance, and what this step may still spawn; what is owed beyond them is dropped,
+    // not carried. The allowance pays for what the rule allows, spawned or over the pool's capacity.
+    const float allowed = std::min(owed, allowance);
+    const int count = Budgeted(allowed, context.stats);
+    spent += std::floor(allowed);
     const float carry = owed - static_cast<float>(count);
     emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)

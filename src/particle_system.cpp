@@ -113,9 +113,8 @@ struct ParticleSystem::Impl
     std::vector<float> positionX, positionY, velocityX, velocityY, life;
     std::vector<std::uint16_t> type;
     std::vector<float> clearance;
-    // Only with checkParticles: each particle's position at the start of the step, and the check.
+    // Only with checkParticles: each particle's position at the start of the step.
     std::vector<float> startX, startY;
-    particles::ParticleCheck check;
     // Cold: bodies of body-backed particles (empty when no type is body-backed). bodySet holds the
     // bodies the system still owns: a body the application destroyed (ForgetBody) leaves it at once,
     // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
@@ -687,8 +686,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
     {
         particles::CheckCounts found;
         const detail::ParticleBodyFilter particleBodies(*this);
-        impl.check.Check(impl.world, impl.Arrays(m_capacity), impl.steps.data(), m_count,
-                         impl.anyBodyBacked ? &particleBodies : nullptr, found);
+        particles::CheckParticles(impl.world, impl.Arrays(m_capacity), impl.steps.data(), m_count,
+                                  impl.anyBodyBacked ? &particleBodies : nullptr, found);
         m_counters.stepsInside += found.inside;
         m_counters.crossings += found.crossings;
     }

@@ -1,5 +1,7 @@
 #include "spawn_point.h"
 
+#include "world_query.h"
+
 #include <algorithm>
 #include <box2d/b2_body.h>
 #include <box2d/b2_chain_shape.h>
@@ -31,7 +33,7 @@ bool IsSolidFor(const b2Fixture& fixture, const BodyFilter* ignore)
 // their front (right) side only, so whatever is behind them is inside the solid they bound. Near a vertex
 // shared by two edges the sum of their normals decides (the side that matters at a convex corner is the
 // intersection of the two back half-planes, at a concave one their union; the summed normal gives both).
-class DiscQuery final : public b2QueryCallback
+class DiscQuery
 {
 public:
     /// `passable`: a body whose overlap is noted (overlapsPassable) but does not end the query; may be null.
@@ -47,42 +49,39 @@ public:
         m_reachBox.upperBound = center + b2Vec2(m_behindReach, m_behindReach);
     }
 
-    bool ReportFixture(b2Fixture* fixture) override
+    /// One child of a fixture the query box meets (QueryChildren); false: the answer is known, stop.
+    bool operator()(const b2Fixture* fixture, int child)
     {
         if (!IsSolidFor(*fixture, m_ignore))
         {
             return true;
         }
+        const b2AABB& box = fixture->GetAABB(child);
+        if (!b2TestOverlap(box, m_reachBox))
+        {
+            return true;
+        }
         const b2Shape* shape = fixture->GetShape();
         const b2Transform& transform = fixture->GetBody()->GetTransform();
-        for (int child = 0; child < shape->GetChildCount(); ++child)
+        if (b2TestOverlap(box, m_box) && Overlaps(shape, child, transform))
         {
-            const b2AABB& box = fixture->GetAABB(child);
-            if (!b2TestOverlap(box, m_reachBox))
+            if (fixture->GetBody() == m_passable)
             {
-                continue;
+                overlapsPassable = true;
+                return true;
             }
-            if (b2TestOverlap(box, m_box) && Overlaps(shape, child, transform))
-            {
-                if (fixture->GetBody() == m_passable)
-                {
-                    overlapsPassable = true;
-                    continue;
-                }
-                overlaps = true;
-                return false;
-            }
-            if (shape->GetType() == b2Shape::e_chain)
-            {
-                b2EdgeShape edge;
-                static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
-                NoteOneSided(edge, transform);
-            }
-            else if (shape->GetType() == b2Shape::e_edge &&
-                     static_cast<const b2EdgeShape*>(shape)->m_oneSided)
-            {
-                NoteOneSided(*static_cast<const b2EdgeShape*>(shape), transform);
-            }
+            overlaps = true;
+            return false;
+        }
+        if (shape->GetType() == b2Shape::e_chain)
+        {
+            b2EdgeShape edge;
+            static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+            NoteOneSided(edge, transform);
+        }
+        else if (shape->GetType() == b2Shape::e_edge && static_cast<const b2EdgeShape*>(shape)->m_oneSided)
+        {
+            NoteOneSided(*static_cast<const b2EdgeShape*>(shape), transform);
         }
         return true;
     }
@@ -144,8 +143,8 @@ private:
         }
         else if (distance <= m_nearest + kSame && b2DistanceSquared(closest, m_nearestPoint) <= kSame * kSame)
         {
-            // The same vertex reached from another edge. Box2D reports a chain once per child proxy in the
-            // box, and each report looks at all children: an edge seen before adds nothing.
+            // The same vertex reached from another edge. One of a direction seen before (the same edge
+            // twice: a fixture duplicated by an editor) adds nothing.
             for (int i = 0; i < m_normalCount; ++i)
             {
                 if (m_normals[i].x == front.x && m_normals[i].y == front.y)
@@ -302,7 +301,7 @@ Start StartAt(const b2World& world, b2Vec2 center, float radius, const BodyFilte
               const b2Body* passable)
 {
     DiscQuery query(center, radius, ignore, passable);
-    world.QueryAABB(&query, query.Box());
+    detail::QueryChildren(world, query.Box(), query);
     return query.Closed() ? Start::closed : query.overlapsPassable ? Start::passable : Start::clear;
 }
 
@@ -311,14 +310,14 @@ Start StartAt(const b2World& world, b2Vec2 center, float radius, const BodyFilte
 bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
 {
     DiscQuery query(center, radius, ignore);
-    world.QueryAABB(&query, query.Box());
+    detail::QueryChildren(world, query.Box(), query);
     return !query.Inside();
 }
 
 bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
 {
     static constexpr float kTouching = 1.0e-5f; // m
-    class Overlaps final : public b2QueryCallback
+    class Overlaps
     {
     public:
         Overlaps(b2Vec2 center, float radius, const BodyFilter* ignore) : m_ignore(ignore)
@@ -330,23 +329,12 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
             box.lowerBound = center - b2Vec2(radius, radius);
             box.upperBound = center + b2Vec2(radius, radius);
         }
-        bool ReportFixture(b2Fixture* fixture) override
+        bool operator()(const b2Fixture* fixture, int child)
         {
-            if (!IsSolidFor(*fixture, m_ignore))
-            {
-                return true;
-            }
-            const b2Shape* shape = fixture->GetShape();
-            for (int child = 0; child < shape->GetChildCount(); ++child)
-            {
-                if (b2TestOverlap(fixture->GetAABB(child), box) &&
-                    b2TestOverlap(shape, child, &m_disc, 0, fixture->GetBody()->GetTransform(), m_identity))
-                {
-                    found = true;
-                    return false;
-                }
-            }
-            return true;
+            found = IsSolidFor(*fixture, m_ignore) && b2TestOverlap(fixture->GetAABB(child), box) &&
+                    b2TestOverlap(fixture->GetShape(), child, &m_disc, 0, fixture->GetBody()->GetTransform(),
+                                  m_identity);
+            return !found;
         }
         b2AABB box;
         bool found = false;
@@ -357,7 +345,7 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
         b2Transform m_identity{b2Vec2(0.0f, 0.0f), b2Rot(0.0f)};
     };
     Overlaps query(center, radius, ignore);
-    world.QueryAABB(&query, query.box);
+    detail::QueryChildren(world, query.box, query);
     return query.found;
 }
 

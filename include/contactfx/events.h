@@ -87,9 +87,11 @@ struct EffectEvent
     std::uint32_t count = 0;     ///< particle hits: how many particles hit (>= 1)
 };
 
-/// Receives every event of a step, in order, at the end of Effects::Step. It may read the world but
-/// must not step it or destroy bodies. It may call Effects::EndScrapes: the scrape ends then follow the
-/// step's events, in Events() too, and it hears them after the rest, each event once.
+/// Receives every event of a step, in order, at the end of Effects::Step; `event` is valid during the
+/// call. It may read the world but must not step it or destroy bodies, nor step the Effects (that throws
+/// InputError, field "listener"). It may call Effects::EndScrapes: the scrape ends then follow the step's
+/// events, in Events() too, and it hears them after the rest, each event once. It may replace or remove
+/// itself (Effects::SetEventListener): the new listener, or none, has the events after the current one.
 class EffectEventListener
 {
 public:

@@ -31,6 +31,10 @@ enum class EmissionMode : std::uint8_t
     perStep,
 };
 
+/// The window over which RuleDef::maxRate holds (s): a pair's unspent allowance is at most this long's
+/// worth of its cap.
+inline constexpr float kMaxRateWindow = 1.0f / 30.0f;
+
 /// Where particles start.
 enum class SpawnPlacement : std::uint8_t
 {
@@ -57,7 +61,11 @@ struct RuleDef
     EmissionMode emission = EmissionMode::rate;
     /// Particles per second per unit of intensity above the threshold (rate mode). [0, 1e6].
     float ratePerIntensity = 50.0f;
-    /// Cap on one body pair's rate, particles per second (rate mode). [0, 1e5].
+    /// Cap on one body pair's rate, particles per second (rate mode). [0, 1e5]. It holds over time, not
+    /// per step: over any stretch of T seconds a pair emits at most maxRate * (T + kMaxRateWindow), so a
+    /// pair that was below its cap may spend up to maxRate * kMaxRateWindow in one step (a landing's
+    /// pressure spike), and the count does not depend on the step rate (at kMaxRateWindow steps or
+    /// shorter; a longer step may spend maxRate times its length).
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 

@@ -1,6 +1,7 @@
 #include "particles/particle_check.h"
 
 #include "spawn_point.h"
+#include "world_query.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
@@ -14,25 +15,6 @@ namespace cfx::particles
 
 namespace
 {
-
-// Collects each fixture a query meets once (Box2D reports a chain once per child proxy).
-class Collect final : public b2QueryCallback
-{
-public:
-    explicit Collect(std::vector<const b2Fixture*>& fixtures) : m_fixtures(fixtures) { m_fixtures.clear(); }
-
-    bool ReportFixture(b2Fixture* fixture) override
-    {
-        if (std::find(m_fixtures.begin(), m_fixtures.end(), fixture) == m_fixtures.end())
-        {
-            m_fixtures.push_back(fixture);
-        }
-        return true;
-    }
-
-private:
-    std::vector<const b2Fixture*>& m_fixtures;
-};
 
 float Cross(b2Vec2 a, b2Vec2 b)
 {
@@ -64,35 +46,31 @@ bool Accepts(const b2Fixture& fixture, const ParticleSide& side)
            (filter.categoryBits & side.maskBits) != 0;
 }
 
-bool PathCrosses(const b2Fixture& fixture, b2Vec2 p, b2Vec2 q)
+// Whether the path p -> q crosses child `child` of an edge or chain fixture.
+bool PathCrosses(const b2Fixture& fixture, int child, b2Vec2 p, b2Vec2 q)
 {
     const b2Transform& xf = fixture.GetBody()->GetTransform();
     const b2Shape& shape = *fixture.GetShape();
+    b2EdgeShape edge;
     if (shape.GetType() == b2Shape::e_edge)
     {
-        const auto& edge = static_cast<const b2EdgeShape&>(shape);
-        return Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
+        edge = static_cast<const b2EdgeShape&>(shape);
     }
-    if (shape.GetType() == b2Shape::e_chain)
+    else if (shape.GetType() == b2Shape::e_chain)
     {
-        const auto& chain = static_cast<const b2ChainShape&>(shape);
-        for (int child = 0; child < chain.GetChildCount(); ++child)
-        {
-            b2EdgeShape edge;
-            chain.GetChildEdge(&edge, child);
-            if (Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), true))
-            {
-                return true;
-            }
-        }
+        static_cast<const b2ChainShape&>(shape).GetChildEdge(&edge, child); // one-sided
     }
-    return false;
+    else
+    {
+        return false;
+    }
+    return Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
 }
 
 } // namespace
 
-void ParticleCheck::Check(const b2World& world, const PoolArrays& pool, const TypeStep* types,
-                          std::uint32_t count, const BodyFilter* ignore, CheckCounts& counts)
+void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep* types, std::uint32_t count,
+                    const BodyFilter* ignore, CheckCounts& counts)
 {
     for (std::uint32_t i = 0; i < count; ++i)
     {
@@ -107,20 +85,22 @@ void ParticleCheck::Check(const b2World& world, const PoolArrays& pool, const Ty
         b2AABB box;
         box.lowerBound = b2Min(start, end);
         box.upperBound = b2Max(start, end);
-        Collect collect(m_fixtures);
-        world.QueryAABB(&collect, box);
         bool inside = false;
         bool crossed = false;
-        for (const b2Fixture* fixture : m_fixtures)
-        {
-            if (!Accepts(*fixture, type.side) || (ignore != nullptr && ignore->Ignore(fixture->GetBody())))
-            {
-                continue;
-            }
-            inside = inside || fixture->TestPoint(end);
-            crossed = crossed ||
-                      (fixture->GetBody()->GetType() == b2_staticBody && PathCrosses(*fixture, start, end));
-        }
+        // Each child once: a fixture of one child (polygon, circle, edge) is met once, a chain once per
+        // segment near the path.
+        detail::QueryChildren(world, box,
+                              [&](const b2Fixture* fixture, int child)
+                              {
+                                  if (Accepts(*fixture, type.side) &&
+                                      (ignore == nullptr || !ignore->Ignore(fixture->GetBody())))
+                                  {
+                                      inside = inside || fixture->TestPoint(end);
+                                      crossed = crossed || (fixture->GetBody()->GetType() == b2_staticBody &&
+                                                            PathCrosses(*fixture, child, start, end));
+                                  }
+                                  return !(inside && crossed);
+                              });
         counts.inside += inside ? 1u : 0u;
         counts.crossings += crossed ? 1u : 0u;
     }

@@ -1,6 +1,6 @@
 // contactfx internal: an honest check of where pool particles ended a step, independent of the sweeps.
 //
-// It asks Box2D itself (b2World::QueryAABB, b2Fixture::TestPoint, the fixtures' own edges), not the
+// It asks Box2D itself (its broad phase, b2Fixture::TestPoint, the fixtures' own edges), not the
 // particle system's cached geometry, so a bug in the cache or the sweeps cannot hide from it. Two ways a
 // particle can be wrong after a step:
 // - inside: its centre is inside a solid fixture it collides with (circles and polygons; edges and chains
@@ -16,10 +16,8 @@
 #include "particles/motion.h"
 
 #include <cstdint>
-#include <vector>
 
 class b2World;
-class b2Fixture;
 
 namespace cfx
 {
@@ -35,16 +33,10 @@ struct CheckCounts
     std::uint64_t crossings = 0; ///< particles whose path crossed an edge or chain
 };
 
-class ParticleCheck
-{
-public:
-    /// Checks live particles [0, count) of `pool` (its start arrays set) against `world`, skipping bodies
-    /// `ignore` ignores; adds to `counts`. Allocates only when a query meets more fixtures than ever.
-    void Check(const b2World& world, const PoolArrays& pool, const TypeStep* types, std::uint32_t count,
-               const BodyFilter* ignore, CheckCounts& counts);
-
-private:
-    std::vector<const b2Fixture*> m_fixtures; // what one query met, each once
-};
+/// Checks live particles [0, count) of `pool` (its start arrays set) against `world`, skipping bodies
+/// `ignore` ignores; adds to `counts`. A query per particle, each meeting the fixtures' children near its
+/// path (a chain's segments near it, not all of them). Allocates nothing.
+void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep* types, std::uint32_t count,
+                    const BodyFilter* ignore, CheckCounts& counts);
 
 } // namespace cfx::particles

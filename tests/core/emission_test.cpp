@@ -115,6 +115,61 @@ TEST(Emission, RateDoesNotDependOnTheStepRate)
     }
 }
 
+// A box landing while it slides presses the ground with a spike of force for one step: its rate, above
+// maxRate in that step, was cut to maxRate * dt, so the landing's share fell with the step rate (a trial:
+// 49, 35, 29 and 26 sparks at 30, 60, 120 and 240 Hz, 26, 13, 6 and 3 of them in the landing step). The cap
+// now holds over a window of time rather than per step: the same landing gives the same count.
+std::uint64_t LandSlidingBox(float hz, float maxRate)
+{
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround(0.8f);
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 1.25f), 0.5f, 0.25f, 0.5f);
+    box->GetFixtureList()->SetDensity(4.0f);
+    box->ResetMassData();
+    box->SetLinearVelocity(b2Vec2(6.0f, 0.0f));
+    EffectsConfig config = DefaultPreset();
+    for (RuleDef& rule : config.rules)
+    {
+        rule.burstPerSpeed = 0.0f; // rate emission only
+        rule.maxRate = maxRate;
+    }
+    Effects& fx = scene.Attach(std::move(config));
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    for (int i = 0; i < static_cast<int>(2.0f * hz); ++i)
+    {
+        scene.Step(1.0f / hz);
+    }
+    return scene.Spawned("sparks");
+}
+
+TEST(Emission, ALandingsPressureSpikeGivesTheSameCountAtEveryStepRate)
+{
+    const float maxRate = DefaultPreset().rules[0].maxRate; // steel on concrete: 800 a second
+    const std::uint64_t at60 = LandSlidingBox(60.0f, maxRate);
+    ASSERT_GT(at60, 30u);
+    for (const float hz : {30.0f, 120.0f, 240.0f})
+    {
+        EXPECT_NEAR(static_cast<double>(LandSlidingBox(hz, maxRate)) / static_cast<double>(at60), 1.0, 0.05)
+            << hz << " Hz";
+    }
+}
+
+// Held above its cap, a pair emits maxRate particles a second, at every step rate, and at most the window's
+// worth more than that over any stretch of time.
+TEST(Emission, APairHeldAboveItsCapEmitsMaxRate)
+{
+    for (const float hz : {30.0f, 60.0f, 120.0f, 240.0f})
+    {
+        EffectsConfig config = DefaultPreset();
+        config.budget.capacity = 100000;
+        config.rules[0].maxRate = 300.0f; // steel on concrete; 14 m/s asks for about 900 a second
+        const std::uint64_t count = SlideBox(std::move(config), 14.0f, hz, 2.0f);
+        EXPECT_GE(count, 600u) << hz << " Hz";
+        EXPECT_LE(static_cast<double>(count), 300.0 * (2.0 + kMaxRateWindow) + 1.0) << hz << " Hz";
+    }
+}
+
 TEST(Emission, TutorialModeEmitsOneParticlePerContactPerStep)
 {
     EffectsConfig tutorial = TutorialPreset();
