@@ -314,6 +314,18 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     }
 
     CheckFields(check, "budget", config.budget, BudgetFields(), config);
+    // Each rule keeps its touching contacts in a list of its own, each with room for budget.contacts.
+    const std::uint64_t contactRoom =
+        static_cast<std::uint64_t>(config.rules.size()) * config.budget.contacts;
+    if (contactRoom > kMaxContactRoom)
+    {
+        check.Fail("budget.contacts", "room for " + std::to_string(config.budget.contacts) +
+                                          " touching contacts for each of the " +
+                                          std::to_string(config.rules.size()) + " rules is " +
+                                          std::to_string(contactRoom) +
+                                          " entries; rules times contacts may be at most " +
+                                          std::to_string(kMaxContactRoom) + " (about 4 GB): lower contacts");
+    }
 
     CheckFields(check, "sound", config.sound, SoundFields(), config);
     MaterialPairs soundPairs;

@@ -268,8 +268,8 @@ const std::array kRuleFields{
              .member = &R::maxRate,
              .unit = "1/s",
              .range = {0.0f, 1.0e5f},
-             .doc =
-                 "cap per body pair (with `burstMax`, what bounds the particles one pair can start per step)",
+             .doc = "cap per body pair, over time: at most `maxRate * (T + 1/30)` in any T seconds (with "
+                    "`burstMax`, what bounds the particles one pair can start per step)",
              .step = 1.0f},
     Field<R>{.name = "scrapeEndDelay",
              .member = &R::scrapeEndDelay,
@@ -369,13 +369,15 @@ const std::array kBudgetFields{
              .doc =
                  "who makes room when full: the particle spawned first, or the one with the least time left",
              .choices = kRecyclePolicies},
-    Field<B>{.name = "contacts",
-             .member = &B::contacts,
-             .range = {0.0f, 1.0e6f},
-             .doc =
-                 "touching contacts (and body pairs) room is made for at creation: with no more touching at "
-                 "once, neither the contact callbacks nor `Effects::Step` allocate",
-             .step = 64.0f},
+    Field<B>{
+        .name = "contacts",
+        .member = &B::contacts,
+        .range = {0.0f, 1.0e6f},
+        .doc =
+            "touching contacts (and body pairs) room is made for at creation, for each rule (about 64 "
+            "bytes a contact a rule; rules times contacts at most 2^26): with no more touching one rule at "
+            "once, neither the contact callbacks nor `Effects::Step` allocate",
+        .step = 64.0f},
     Field<B>{.name = "particleHits",
              .member = &B::particleHits,
              .range = {0.0f, 4096.0f},

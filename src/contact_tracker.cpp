@@ -63,11 +63,17 @@ void ContactTracker::Reserve(std::uint32_t contacts)
     m_endingPairs.reserve(contacts);
 }
 
+TrackedContact* ContactTracker::Tracked(const b2Contact* contact)
+{
+    const std::uint64_t* value = m_index.Find(contact);
+    return value != nullptr ? &m_byRule[UnpackRule(*value).index][UnpackSlot(*value)] : nullptr;
+}
+
 TrackedContact* ContactTracker::Track(b2Contact* contact)
 {
-    if (std::uint64_t* value = m_index.Find(contact))
+    if (TrackedContact* tracked = Tracked(contact))
     {
-        return &m_byRule[UnpackRule(*value).index][UnpackSlot(*value)];
+        return tracked;
     }
     if (!IsSolid(contact))
     {
@@ -394,8 +400,7 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
     {
         m_forward->PreSolve(contact, oldManifold);
         // It may have changed what is tracked (SetMaterial ends contacts): look again.
-        std::uint64_t* value = m_index.Find(contact);
-        tracked = value != nullptr ? &m_byRule[UnpackRule(*value).index][UnpackSlot(*value)] : nullptr;
+        tracked = Tracked(contact);
     }
     // After the application's PreSolve, which may disable the contact.
     if (tracked != nullptr)
@@ -406,13 +411,12 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
 
 void ContactTracker::PostSolve(b2Contact* contact, const b2ContactImpulse* impulse)
 {
-    if (std::uint64_t* value = m_index.Find(contact))
+    if (TrackedContact* tracked = Tracked(contact))
     {
-        TrackedContact& tracked = m_byRule[UnpackRule(*value).index][UnpackSlot(*value)];
         // Continuous collision may report a contact more than once per step: keep the largest.
         for (int i = 0; i < impulse->count && i < 2; ++i)
         {
-            tracked.normalImpulse[i] = std::max(tracked.normalImpulse[i], impulse->normalImpulses[i]);
+            tracked->normalImpulse[i] = std::max(tracked->normalImpulse[i], impulse->normalImpulses[i]);
         }
     }
     if (m_forward != nullptr)

@@ -173,6 +173,8 @@ public:
     void PostSolve(b2Contact* contact, const b2ContactImpulse* impulse) override;
 
 private:
+    /// The contact's tracking, or null when it is not tracked.
+    TrackedContact* Tracked(const b2Contact* contact);
     /// The contact's tracking, begun now if it is solid and its materials select a rule; else null.
     TrackedContact* Track(b2Contact* contact);
     void Untrack(b2Contact* contact, ScrapeEnd reason);

@@ -349,7 +349,7 @@ void EffectsPanel(Session& session, EffectsEditor& editor)
 {
     editor.Follow(session);
     bool finished = false;
-    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f); // room for the field names
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.4f); // room for the field names and units
     if (ImGui::BeginTabBar("effects"))
     {
         if (ImGui::BeginTabItem("Materials"))

@@ -39,6 +39,9 @@ void DrawPanels(Session& session, PanelState& state, int windowWidth, int window
         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
     if (ImGui::Begin("contactfx testbed", nullptr, kFixed))
     {
+        // The column is narrow and does not scroll sideways: text wraps at its edge (a trial found
+        // messages, problems and the sound line cut off there).
+        ImGui::PushTextWrapPos(0.0f);
         if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen))
         {
             ScenesPanel(session, state.toggles, state.sceneError);
@@ -59,6 +62,7 @@ void DrawPanels(Session& session, PanelState& state, int windowWidth, int window
         {
             EffectsPanel(session, state.editor);
         }
+        ImGui::PopTextWrapPos();
     }
     ImGui::End();
 }

@@ -28,14 +28,19 @@ enum class RecyclePolicy : std::uint8_t
     lowestLife, ///< the particle with the least time left to live (ties: the oldest)
 };
 
+/// The most touching-contact entries a config's budget may make room for: rules * budget.contacts (each
+/// rule has room for budget.contacts of its own, about 64 bytes each: this is about 4 GB).
+inline constexpr std::uint64_t kMaxContactRoom = std::uint64_t{1} << 26;
+
 /// The particle budget.
 struct ParticleBudget
 {
     std::uint32_t capacity = 4096; ///< hard cap on live particles, 1 .. 4,000,000
     RecyclePolicy recycle = RecyclePolicy::oldest;
-    /// Touching contacts (and body pairs) Effects makes room for when it is created, 0 .. 1,000,000:
-    /// with no more touching at once, neither the contact callbacks nor Effects::Step allocate. More
-    /// allocate once, as they first happen.
+    /// Touching contacts (and body pairs) Effects makes room for when it is created, for each rule (about
+    /// 64 bytes a contact a rule; rules * contacts <= kMaxContactRoom), 0 .. 1,000,000:
+    /// with no more touching one rule at once, neither the contact callbacks nor Effects::Step allocate.
+    /// More allocate once, as they first happen.
     std::uint32_t contacts = 1024;
     /// Particle hit groups (per particle type and body) a step reports at most, 0 .. 4096: beyond it the
     /// groups with the most hits are kept (ties: the first to appear). 0 records no hits at all.

@@ -31,11 +31,13 @@ void Line(DrawList& list, ShapeRecorder& draw, b2Vec2 from, b2Vec2 to, const Col
 }
 
 // A label is left out when one with the same text is closer than kLabelSpacing (a chain's segments
-// under one body), and moved down a line while it would overlap another.
+// under one body), and moved down a line while it would overlap another, at most kMostLabelMoves lines:
+// one that still overlaps is left out too (a trial's pile of balls stacked labels over each other and a
+// hundred pixels below their contacts).
 constexpr float kLabelSpacing = 48.0f; // px
 constexpr float kLabelLine = 16.0f;    // px
 constexpr float kLabelWidth = 160.0f;  // px, what a label is assumed to cover to its right
-constexpr int kMostLabelMoves = 6;
+constexpr int kMostLabelMoves = 2;
 
 void AddLabel(DrawList& list, b2Vec2 at, std::string text)
 {
@@ -46,20 +48,22 @@ void AddLabel(DrawList& list, b2Vec2 at, std::string text)
             return;
         }
     }
-    for (int move = 0; move < kMostLabelMoves; ++move)
+    const auto overlaps = [&]
     {
-        const bool overlaps = std::any_of(list.labels.begin(), list.labels.end(),
-                                          [&](const TextLabel& label) {
-                                              return std::abs(label.at.y - at.y) < kLabelLine &&
-                                                     std::abs(label.at.x - at.x) < kLabelWidth;
-                                          });
-        if (!overlaps)
-        {
-            break;
-        }
+        return std::any_of(list.labels.begin(), list.labels.end(),
+                           [&](const TextLabel& label) {
+                               return std::abs(label.at.y - at.y) < kLabelLine &&
+                                      std::abs(label.at.x - at.x) < kLabelWidth;
+                           });
+    };
+    for (int move = 0; move < kMostLabelMoves && overlaps(); ++move)
+    {
         at.y += kLabelLine;
     }
-    list.labels.push_back(TextLabel{at, std::move(text), Color{1.0f, 1.0f, 1.0f, 1.0f}});
+    if (!overlaps())
+    {
+        list.labels.push_back(TextLabel{at, std::move(text), Color{1.0f, 1.0f, 1.0f, 1.0f}});
+    }
 }
 
 void AddContact(DrawList& list, ShapeRecorder& draw, const Effects& effects, b2Contact& contact, RuleId rule,

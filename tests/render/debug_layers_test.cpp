@@ -9,6 +9,7 @@
 
 #include <box2d/b2_contact.h>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace cfx::test
 {
@@ -125,6 +126,55 @@ TEST_F(SlidingBlock, EveryLayerDrawsWhereTheContactIs)
     const RuleId rule = world.effects->Rules().Find(world.Material("steel"), world.Material("concrete"));
     EXPECT_EQ(list.labels[0].text, RuleLabel(*world.effects, rule));
     EXPECT_NE(list.labels[0].text.find("sparks"), std::string::npos);
+}
+
+// A trial launched sixty balls into a scene: their rule names were stacked over each other and moved up to
+// six lines (96 px) below their contacts. Labels never overlap now, and stay within two lines of where
+// they belong; what finds no room there is left out.
+TEST(DebugLabels, ManyContactsGiveLabelsThatNeverOverlap)
+{
+    TestWorld world;
+    b2Body* ground = world.CreateGround();
+    // 0.61 m apart at 80 px a metre: 49 px, just beyond the spacing that leaves out a label of the same text,
+    // so each label's place is taken by up to three before it.
+    std::vector<b2Body*> balls;
+    for (int i = 0; i < 12; ++i)
+    {
+        balls.push_back(world.CreateCircle(b2Vec2(-4.0f + 0.61f * static_cast<float>(i), 0.1f), 0.1f, 0.6f));
+    }
+    world.Attach();
+    world.effects->SetMaterial(ground, world.Material("concrete"));
+    for (b2Body* ball : balls)
+    {
+        world.effects->SetMaterial(ball, world.Material("steel"));
+        ball->SetLinearVelocity(b2Vec2(10.0f, 0.0f));
+    }
+    world.Step();
+    DebugLayers layers;
+    layers.ruleNames = true;
+    DrawList list;
+    list.Begin(MakeCamera(800, 400, 10.0f, b2Vec2(0.0f, 0.0f)), Color{});
+    AddDebugLayers(list, *world.effects, {}, layers, DrawStyle{});
+    ASSERT_GT(list.labels.size(), 1u);
+    EXPECT_LT(list.labels.size(), balls.size()) << "crowded: some are left out";
+    float top = list.labels[0].at.y;
+    float bottom = top;
+    for (const TextLabel& label : list.labels)
+    {
+        top = std::min(top, label.at.y);
+        bottom = std::max(bottom, label.at.y);
+    }
+    EXPECT_LE(bottom - top, 2.0f * 16.0f) << "every contact is on the ground: at most two lines down";
+    for (std::size_t i = 0; i < list.labels.size(); ++i)
+    {
+        for (std::size_t j = i + 1; j < list.labels.size(); ++j)
+        {
+            const b2Vec2 a = list.labels[i].at;
+            const b2Vec2 b = list.labels[j].at;
+            EXPECT_TRUE(std::abs(a.y - b.y) >= 16.0f || std::abs(a.x - b.x) >= 160.0f)
+                << "labels " << i << " and " << j;
+        }
+    }
 }
 
 TEST_F(SlidingBlock, NothingIsAddedWithNoLayerOn)
