@@ -420,18 +420,18 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
         return;
     }
     // The cap holds over time (a token bucket): the pair's allowance refills at maxRate up to the
-    // window's worth (UpdatePair), and each particle spends one. Cut per step, a landing's one-step
-    // pressure spike gave maxRate * dt: fewer particles the higher the step rate.
+    // window's worth (UpdatePair), and what the step grants spends it. Cut per step, a landing's one-step
+    // pressure spike gave maxRate * dt: fewer particles the higher the step rate. A pair below its cap is
+    // granted all it asks, as before.
     float& spent = m_capSpent[pairSlot];
     const float allowance = std::max(rule.maxRate * std::max(kMaxRateWindow, context.dt) - spent, 0.0f);
-    const float rate = rule.ratePerIntensity * (intensity - rule.threshold);
+    const float granted =
+        std::min(rule.ratePerIntensity * (intensity - rule.threshold) * context.dt, allowance);
+    spent += granted;
     float& emissionCarry = m_emissionCarry[pairSlot];
-    const float owed = emissionCarry + rate * context.dt;
-    // At most the allowance, and what this step may still spawn; what is owed beyond them is dropped,
-    // not carried. The allowance pays for what the rule allows, spawned or over the pool's capacity.
-    const float allowed = std::min(owed, allowance);
-    const int count = Budgeted(allowed, context.stats);
-    spent += std::floor(allowed);
+    const float owed = emissionCarry + granted;
+    // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
+    const int count = Budgeted(owed, context.stats);
     const float carry = owed - static_cast<float>(count);
     emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)

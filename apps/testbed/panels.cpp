@@ -39,9 +39,6 @@ void DrawPanels(Session& session, PanelState& state, int windowWidth, int window
         ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
     if (ImGui::Begin("contactfx testbed", nullptr, kFixed))
     {
-        // The column is narrow and does not scroll sideways: text wraps at its edge (a trial found
-        // messages, problems and the sound line cut off there).
-        ImGui::PushTextWrapPos(0.0f);
         if (ImGui::CollapsingHeader("Scenes", ImGuiTreeNodeFlags_DefaultOpen))
         {
             ScenesPanel(session, state.toggles, state.sceneError);
@@ -54,6 +51,10 @@ void DrawPanels(Session& session, PanelState& state, int windowWidth, int window
         {
             EventsPanel(session);
         }
+        // The column is narrow and does not scroll sideways: these panels' messages wrap at its edge (a
+        // trial found messages, problems and the sound line cut off there). Not the tables above: their
+        // names would wrap at every column edge.
+        ImGui::PushTextWrapPos(0.0f);
         if (ImGui::CollapsingHeader("Sound"))
         {
             SoundPanel(session);

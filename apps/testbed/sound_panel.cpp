@@ -157,6 +157,7 @@ void SoundPanel(const Session& session)
                 static_cast<unsigned long long>(stats.voicesCut));
     constexpr ImGuiTableFlags kTable =
         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+    ImGui::PushTextWrapPos(-1.0f); // a table's names stay on one line (the panel's messages wrap)
     if (ImGui::BeginTable("voices", 4, kTable))
     {
         ImGui::TableSetupColumn("voice");
@@ -181,6 +182,7 @@ void SoundPanel(const Session& session)
         }
         ImGui::EndTable();
     }
+    ImGui::PopTextWrapPos();
     Playback(sound);
 }
 

@@ -62,10 +62,11 @@ struct RuleDef
     /// Particles per second per unit of intensity above the threshold (rate mode). [0, 1e6].
     float ratePerIntensity = 50.0f;
     /// Cap on one body pair's rate, particles per second (rate mode). [0, 1e5]. It holds over time, not
-    /// per step: over any stretch of T seconds a pair emits at most maxRate * (T + kMaxRateWindow), so a
-    /// pair that was below its cap may spend up to maxRate * kMaxRateWindow in one step (a landing's
-    /// pressure spike), and the count does not depend on the step rate (at kMaxRateWindow steps or
-    /// shorter; a longer step may spend maxRate times its length).
+    /// per step: over any stretch of T seconds a pair emits at most maxRate * (T + kMaxRateWindow) and
+    /// the fraction of a particle it carries, so a pair that was below its cap may spend up to maxRate *
+    /// kMaxRateWindow in one step (a landing's pressure spike), and the count does not depend on the step
+    /// rate (at kMaxRateWindow steps or shorter; a longer step may spend maxRate times its length). A
+    /// pair below its cap emits all its rate asks for.
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 
