@@ -140,7 +140,7 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStar
     // with both manifold points at most.
     m_pairSteps.reserve(config.budget.contacts);
     m_emissionCarry.reserve(config.budget.contacts);
-    m_capSpent.reserve(config.budget.contacts);
+    m_capUnsaved.reserve(config.budget.contacts);
     m_order.reserve(config.budget.contacts);
     m_samples.reserve(std::size_t{2} * config.budget.contacts);
 }
@@ -152,13 +152,13 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
     {
         m_pairSteps.resize(tracker.PairSlots());
         m_emissionCarry.resize(tracker.PairSlots());
-        m_capSpent.resize(tracker.PairSlots());
+        m_capUnsaved.resize(tracker.PairSlots());
     }
     // A slot whose pair ended owes nothing to the next pair that takes it.
     for (const EndedPair& ended : tracker.EndedPairs())
     {
         m_emissionCarry[ended.slot] = 0.0f;
-        m_capSpent[ended.slot] = 0.0f;
+        m_capUnsaved[ended.slot] = 0.0f;
     }
     // Box2D calls PreSolve for every touching contact with an awake body in every world step: none since
     // the last step while a tracked contact has an awake body means the world did not step (a paused
@@ -314,10 +314,10 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
             Burst(context, tracked);
         }
     }
-    // The rate cap's allowance refills with time, asleep or not.
-    m_capSpent[pairSlot] = std::max(m_capSpent[pairSlot] - rule.maxRate * context.dt, 0.0f);
     if (step.asleep)
     {
+        // Time passes for the rate cap's savings, asleep or not (EmitRate).
+        m_capUnsaved[pairSlot] = std::max(m_capUnsaved[pairSlot] - rule.maxRate * context.dt, 0.0f);
         context.events.Asleep(pairSlot);
         return;
     }
@@ -415,19 +415,22 @@ int Emitter::Budgeted(float owed, EffectsStats& stats) const
 void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity)
 {
     const RuleDef& rule = context.rule;
+    // The cap holds over time: each step allows maxRate * dt, and the pair saves what it leaves unused, up
+    // to kMaxRateWindow's worth, to spend later in one step (a landing's pressure spike). Cut per step, the
+    // spike gave maxRate * dt: fewer particles the higher the step rate. A pair held above its cap gets its
+    // savings once and then maxRate, at any step rate; one below it is granted all it asks, as before.
+    const float window = rule.maxRate * kMaxRateWindow; // the most a pair saves
+    const float stepAllowance = rule.maxRate * context.dt;
+    float& unsaved = m_capUnsaved[pairSlot]; // how far its savings are below the window's worth
     if (!(intensity > rule.threshold))
     {
+        unsaved = std::max(unsaved - stepAllowance, 0.0f);
         return;
     }
-    // The cap holds over time (a token bucket): the pair's allowance refills at maxRate up to the
-    // window's worth (UpdatePair), and what the step grants spends it. Cut per step, a landing's one-step
-    // pressure spike gave maxRate * dt: fewer particles the higher the step rate. A pair below its cap is
-    // granted all it asks, as before.
-    float& spent = m_capSpent[pairSlot];
-    const float allowance = std::max(rule.maxRate * std::max(kMaxRateWindow, context.dt) - spent, 0.0f);
+    const float allowance = (window - unsaved) + stepAllowance;
     const float granted =
         std::min(rule.ratePerIntensity * (intensity - rule.threshold) * context.dt, allowance);
-    spent += granted;
+    unsaved = std::max(window - (allowance - granted), 0.0f);
     float& emissionCarry = m_emissionCarry[pairSlot];
     const float owed = emissionCarry + granted;
     // At most what this step may still spawn; what is owed beyond it is dropped, not carried.

@@ -13,8 +13,9 @@
 //            pressed): where the pair presses, it rubs; the number of points does not change it;
 //   count    rate = ratePerIntensity * (intensity - threshold), integrated with the fraction owed
 //            carried in the pair, so it survives the contact moving from one segment to the next, and
-//            capped by the pair's allowance, which refills at maxRate up to kMaxRateWindow's worth (the
-//            cap holds over time, so a one-step pressure spike gives the same count at any step rate);
+//            capped by maxRate * dt plus what the pair saved of earlier steps' allowances, up to
+//            kMaxRateWindow's worth (the cap holds over time, so a one-step pressure spike, or a pair
+//            starting above its cap, gives the same count at any step rate);
 //   where    the count is shared out over the samples by their normal impulse (systematic sampling:
 //            one random offset, each sample gets the floor or the ceiling of its share), and each sample
 //            with particles finds one start point outside every solid (spawn_point.h).
@@ -117,7 +118,7 @@ private:
     std::uint64_t m_stamp = 0;               // one per rule per Emit
     std::vector<PairStep> m_pairSteps;       // by pair slot
     std::vector<float> m_emissionCarry;      // by pair slot: fraction of a particle owed, kept across steps
-    std::vector<float> m_capSpent;           // by pair slot: particles spent of the maxRate allowance
+    std::vector<float> m_capUnsaved;         // by pair slot: how far its maxRate savings are below full
     std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
     std::vector<Sample> m_samples;           // this rule's samples
     int m_spawnBudget = 0;                   // particles this Emit may still spawn (the pool's capacity)

@@ -31,8 +31,7 @@ enum class EmissionMode : std::uint8_t
     perStep,
 };
 
-/// The window over which RuleDef::maxRate holds (s): a pair's unspent allowance is at most this long's
-/// worth of its cap.
+/// The window over which RuleDef::maxRate holds (s): a pair saves at most this long's worth of its cap.
 inline constexpr float kMaxRateWindow = 1.0f / 30.0f;
 
 /// Where particles start.
@@ -62,11 +61,12 @@ struct RuleDef
     /// Particles per second per unit of intensity above the threshold (rate mode). [0, 1e6].
     float ratePerIntensity = 50.0f;
     /// Cap on one body pair's rate, particles per second (rate mode). [0, 1e5]. It holds over time, not
-    /// per step: over any stretch of T seconds a pair emits at most maxRate * (T + kMaxRateWindow) and
-    /// the fraction of a particle it carries, so a pair that was below its cap may spend up to maxRate *
-    /// kMaxRateWindow in one step (a landing's pressure spike), and the count does not depend on the step
-    /// rate (at kMaxRateWindow steps or shorter; a longer step may spend maxRate times its length). A
-    /// pair below its cap emits all its rate asks for.
+    /// per step: each step allows maxRate * dt, and what a pair leaves unused it saves, up to maxRate *
+    /// kMaxRateWindow, for a later step to spend on top of its own. So over any T seconds a pair emits at
+    /// most maxRate * (T + kMaxRateWindow) and the fraction of a particle it carries; a pair below its cap
+    /// emits all its rate asks for; one held above it from its start emits its savings once, then
+    /// maxRate, at any step rate; and a one-step spike (a landing's pressure) is not cut while it is
+    /// within the savings plus the step's allowance (beyond that it gets those, which grow with dt).
     float maxRate = 1000.0f;
     SpawnPlacement placement = SpawnPlacement::surface;
 
