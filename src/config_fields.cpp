@@ -281,7 +281,7 @@ const std::array kRuleFields{
              .member = &R::impactThreshold,
              .unit = "m/s",
              .range = {0.0f, 1.0e4f},
-             .doc = "approach speed along the normal at first touch that makes an impact event",
+             .doc = "approach speed along the normal at a new touch that makes an impact event",
              .step = 0.05f},
     Field<R>{.name = "burstPerSpeed",
              .member = &R::burstPerSpeed,

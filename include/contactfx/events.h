@@ -6,8 +6,10 @@
 // rule's threshold: it begins, changes every step with its intensity, and always ends (the pair's last
 // contact ended, a body fell asleep, intensity at or below the threshold for the rule's scrapeEndDelay,
 // the last fixture or body destroyed), so a looping sound that follows its id always stops. An impact is
-// a first touch whose approach speed along the normal, taken before the solver removes it, reaches the
-// rule's impactThreshold; a body pair reports at most one per step (its fastest new contact). Particle hits
+// a new touch (a manifold point new since its contact's last enabled PreSolve, approaching faster than
+// 1 mm/s: a first touch, or a box's second corner coming down) whose approach speed along the normal, taken
+// before the solver removes it, reaches the rule's impactThreshold; a contact the application disables in
+// PreSolve has not touched. A body pair reports at most one per step (its fastest new touch). Particle hits
 // are the step's pool particles that hit a body, one event per particle type and body (dirt pattering on
 // the ground, sparks ticking on steel): ParticleSystem::Hits as events, with no rule.
 //

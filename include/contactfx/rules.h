@@ -73,7 +73,7 @@ struct RuleDef
     // Events (events.h) and impact bursts.
     /// A scrape ends after its intensity has stayed at or below the threshold this long, s, [0, 3600].
     float scrapeEndDelay = 0.1f;
-    /// Approach speed along the normal at first touch that makes an impact event, m/s, [0, 1e4].
+    /// Approach speed along the normal at a new touch (events.h) that makes an impact event, m/s, [0, 1e4].
     float impactThreshold = 2.0f;
     /// Particles of the rule's type burst per m/s of approach speed above impactThreshold, [0, 1e4].
     float burstPerSpeed = 0.0f;
