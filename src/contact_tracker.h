@@ -125,7 +125,6 @@ public:
     std::span<const TrackedContact> Contacts(RuleId rule) const { return m_byRule[rule.index]; }
     int RuleCount() const { return static_cast<int>(m_byRule.size()); }
     std::size_t TrackedCount() const { return m_index.Size(); }
-    bool IsTracked(const b2Contact* contact) const { return m_index.Find(contact) != nullptr; }
 
     /// After b2World::Step: drops contacts that became sensors or stopped touching without EndContact,
     /// then ends the pairs that lost their last contact and did not get one back (EndedPairs).

@@ -139,8 +139,7 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStar
     // Room for the configured number of touching contacts (budget.contacts), each a pair of its own
     // with both manifold points at most.
     m_pairSteps.reserve(config.budget.contacts);
-    m_emissionCarry.reserve(config.budget.contacts);
-    m_capUnsaved.reserve(config.budget.contacts);
+    m_rates.reserve(config.budget.contacts);
     m_order.reserve(config.budget.contacts);
     m_samples.reserve(std::size_t{2} * config.budget.contacts);
 }
@@ -151,14 +150,12 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
     if (m_pairSteps.size() < tracker.PairSlots())
     {
         m_pairSteps.resize(tracker.PairSlots());
-        m_emissionCarry.resize(tracker.PairSlots());
-        m_capUnsaved.resize(tracker.PairSlots());
+        m_rates.resize(tracker.PairSlots());
     }
-    // A slot whose pair ended owes nothing to the next pair that takes it.
+    // A slot whose pair ended owes nothing to the next pair that takes it, and its savings are full.
     for (const EndedPair& ended : tracker.EndedPairs())
     {
-        m_emissionCarry[ended.slot] = 0.0f;
-        m_capUnsaved[ended.slot] = 0.0f;
+        m_rates[ended.slot] = RateState{};
     }
     // Box2D calls PreSolve for every touching contact with an awake body in every world step: none since
     // the last step while a tracked contact has an awake body means the world did not step (a paused
@@ -316,8 +313,7 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
     }
     if (step.asleep)
     {
-        // Time passes for the rate cap's savings, asleep or not (EmitRate).
-        m_capUnsaved[pairSlot] = std::max(m_capUnsaved[pairSlot] - rule.maxRate * context.dt, 0.0f);
+        Save(m_rates[pairSlot], rule.maxRate * context.dt); // time passes for the cap, asleep or not
         context.events.Asleep(pairSlot);
         return;
     }
@@ -421,22 +417,21 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
     // savings once and then maxRate, at any step rate; one below it is granted all it asks, as before.
     const float window = rule.maxRate * kMaxRateWindow; // the most a pair saves
     const float stepAllowance = rule.maxRate * context.dt;
-    float& unsaved = m_capUnsaved[pairSlot]; // how far its savings are below the window's worth
+    RateState& state = m_rates[pairSlot];
     if (!(intensity > rule.threshold))
     {
-        unsaved = std::max(unsaved - stepAllowance, 0.0f);
+        Save(state, stepAllowance);
         return;
     }
-    const float allowance = (window - unsaved) + stepAllowance;
+    const float allowance = (window - state.unsaved) + stepAllowance;
     const float granted =
         std::min(rule.ratePerIntensity * (intensity - rule.threshold) * context.dt, allowance);
-    unsaved = std::max(window - (allowance - granted), 0.0f);
-    float& emissionCarry = m_emissionCarry[pairSlot];
-    const float owed = emissionCarry + granted;
+    state.unsaved = std::max(window - (allowance - granted), 0.0f);
+    const float owed = state.carry + granted;
     // At most what this step may still spawn; what is owed beyond it is dropped, not carried.
     const int count = Budgeted(owed, context.stats);
     const float carry = owed - static_cast<float>(count);
-    emissionCarry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
+    state.carry = carry >= 0.0f && carry < 1.0f ? carry : 0.0f;
     if (count <= 0 || step.first == kNone)
     {
         return;

@@ -48,6 +48,7 @@
 #include "events.h"
 #include "random.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -70,7 +71,7 @@ public:
     /// The fraction of a particle the pair in `slot` owes (rate emission), in [0, 1).
     float EmissionCarry(std::uint32_t slot) const
     {
-        return slot < m_emissionCarry.size() ? m_emissionCarry[slot] : 0.0f;
+        return slot < m_rates.size() ? m_rates[slot].carry : 0.0f;
     }
 
 private:
@@ -88,6 +89,18 @@ private:
         float ownIntensity = 0.0f;  // with the point's own normal force (perStep emission)
         float intensity = 0.0f;     // with the pair's normal force
     };
+
+    // What rate emission keeps of one pair across steps; a new pair starts from the defaults.
+    struct RateState
+    {
+        float carry = 0.0f;   // fraction of a particle owed, in [0, 1)
+        float unsaved = 0.0f; // how far its maxRate savings are below the window's worth (0: full)
+    };
+    // A step's allowance (maxRate * dt) the pair leaves unused all goes into its savings.
+    static void Save(RateState& state, float stepAllowance)
+    {
+        state.unsaved = std::max(state.unsaved - stepAllowance, 0.0f);
+    }
 
     // What one pair gathered this step; valid while `stamp` is the step's.
     struct PairStep
@@ -117,8 +130,7 @@ private:
     std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
     std::uint64_t m_stamp = 0;               // one per rule per Emit
     std::vector<PairStep> m_pairSteps;       // by pair slot
-    std::vector<float> m_emissionCarry;      // by pair slot: fraction of a particle owed, kept across steps
-    std::vector<float> m_capUnsaved;         // by pair slot: how far its maxRate savings are below full
+    std::vector<RateState> m_rates;          // by pair slot
     std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
     std::vector<Sample> m_samples;           // this rule's samples
     int m_spawnBudget = 0;                   // particles this Emit may still spawn (the pool's capacity)

@@ -1,10 +1,10 @@
 #include "spawn_point.h"
 
+#include "child_edge.h"
 #include "world_query.h"
 
 #include <algorithm>
 #include <box2d/b2_body.h>
-#include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
@@ -73,15 +73,10 @@ public:
             overlaps = true;
             return false;
         }
-        if (shape->GetType() == b2Shape::e_chain)
+        b2EdgeShape edge;
+        if (detail::ChildEdge(*shape, child, edge) && edge.m_oneSided)
         {
-            b2EdgeShape edge;
-            static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
             NoteOneSided(edge, transform);
-        }
-        else if (shape->GetType() == b2Shape::e_edge && static_cast<const b2EdgeShape*>(shape)->m_oneSided)
-        {
-            NoteOneSided(*static_cast<const b2EdgeShape*>(shape), transform);
         }
         return true;
     }

@@ -1,12 +1,10 @@
 #include "particles/particle_check.h"
 
+#include "child_edge.h"
 #include "spawn_point.h"
 #include "world_query.h"
 
-#include <algorithm>
 #include <box2d/b2_body.h>
-#include <box2d/b2_chain_shape.h>
-#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 
@@ -46,25 +44,13 @@ bool Accepts(const b2Fixture& fixture, const ParticleSide& side)
            (filter.categoryBits & side.maskBits) != 0;
 }
 
-// Whether the path p -> q crosses child `child` of an edge or chain fixture.
+// Whether the path p -> q crosses child `child` of an edge or chain fixture (false for other shapes).
 bool PathCrosses(const b2Fixture& fixture, int child, b2Vec2 p, b2Vec2 q)
 {
     const b2Transform& xf = fixture.GetBody()->GetTransform();
-    const b2Shape& shape = *fixture.GetShape();
     b2EdgeShape edge;
-    if (shape.GetType() == b2Shape::e_edge)
-    {
-        edge = static_cast<const b2EdgeShape&>(shape);
-    }
-    else if (shape.GetType() == b2Shape::e_chain)
-    {
-        static_cast<const b2ChainShape&>(shape).GetChildEdge(&edge, child); // one-sided
-    }
-    else
-    {
-        return false;
-    }
-    return Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
+    return detail::ChildEdge(*fixture.GetShape(), child, edge) &&
+           Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // contactfx internal: the static cache and the per-step walk of the world (see world_geometry.h).
 #include "particles/world_geometry.h"
 
+#include "child_edge.h"
 #include "spawn_point.h"
 
 #include <algorithm>
@@ -393,14 +394,7 @@ void WorldGeometry::BuildStatic(b2World& world)
                 for (int child = 0; child < children; ++child)
                 {
                     b2EdgeShape edge;
-                    if (shape->GetType() == b2Shape::e_edge)
-                    {
-                        edge = *static_cast<const b2EdgeShape*>(shape);
-                    }
-                    else
-                    {
-                        static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
-                    }
+                    detail::ChildEdge(*shape, child, edge);
                     const b2Vec2 v1 = b2Mul(xf, edge.m_vertex1);
                     const b2Vec2 v2 = b2Mul(xf, edge.m_vertex2);
                     if (v1 == v2)
