@@ -244,6 +244,10 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     std::vector<Diagnostic> out;
     Checker check(file, out);
 
+    if (HasControlCharacter(config.name))
+    {
+        check.Fail("name", kNoControlCharacters + detail::QuotedText(config.name));
+    }
     if (config.materials.size() >= MaterialId::kNone)
     {
         check.Fail("materials",
@@ -269,7 +273,8 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
 
     if (config.particleTypes.size() >= ParticleTypeId::kNone)
     {
-        check.Fail("particleTypes", "expected at most 65534 particle types");
+        check.Fail("particleTypes", "expected at most 65534 particle types, found " +
+                                        std::to_string(config.particleTypes.size()));
     }
     seen.clear();
     for (std::size_t i = 0; i < config.particleTypes.size(); ++i)
@@ -293,7 +298,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
 
     if (config.rules.size() >= RuleId::kNone)
     {
-        check.Fail("rules", "expected at most 65534 rules");
+        check.Fail("rules", "expected at most 65534 rules, found " + std::to_string(config.rules.size()));
     }
     MaterialPairs pairs;
     for (std::size_t i = 0; i < config.rules.size(); ++i)
@@ -358,7 +363,8 @@ std::vector<Diagnostic> ValidateParticles(std::span<const ParticleTypeDef> types
     Checker check(file, out);
     if (types.size() >= ParticleTypeId::kNone)
     {
-        check.Fail("particleTypes", "expected at most 65534 particle types");
+        check.Fail("particleTypes",
+                   "expected at most 65534 particle types, found " + std::to_string(types.size()));
     }
     const EffectsConfig none; // particle types have no field naming a material or another type
     for (std::size_t i = 0; i < types.size(); ++i)

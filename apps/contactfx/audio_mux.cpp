@@ -60,7 +60,11 @@ void MuxAudio(const std::filesystem::path& video, const std::filesystem::path& w
     }
     if (!ProbeAudioSeconds(out))
     {
-        throw InputError(shown, "--out", "ffmpeg wrote no audio stream");
+        // What a full disk does to the last step: ffmpeg is told of no error, and the file is cut short.
+        throw InputError(
+            shown, "--out",
+            "ffmpeg exited with success but the video is incomplete (ffprobe finds no audio stream "
+            "in what it wrote; a full disk?): no file written");
     }
 }
 

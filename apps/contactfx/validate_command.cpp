@@ -225,7 +225,10 @@ void PrintText(const Report& report)
     else if (report.kind == FileKind::effects)
     {
         const EffectsConfig& config = *report.config;
-        std::cout << report.file << ": ok: effects config \"" << config.name << "\", "
+        // JSON's escapes, as messages quote names (Validate refuses control characters in it).
+        const std::string name =
+            nlohmann::json(config.name).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+        std::cout << report.file << ": ok: effects config " << name << ", "
                   << Count(config.materials.size(), "material", "materials") << ", "
                   << Count(config.particleTypes.size(), "particle type", "particle types") << ", "
                   << Count(config.rules.size(), "rule", "rules") << ", "

@@ -52,10 +52,10 @@ struct ParticleBudget
 /// A complete effects configuration.
 struct EffectsConfig
 {
-    std::string name;                   ///< for display ("tutorial", "default")
+    std::string name;                   ///< for display ("tutorial", "default"); no control characters
     std::vector<std::string> materials; ///< unique, non-empty names, no control characters; at most 65534
-    std::vector<ParticleTypeDef> particleTypes; ///< unique names
-    std::vector<RuleDef> rules;                 ///< at most one per unordered material pair
+    std::vector<ParticleTypeDef> particleTypes; ///< unique names; at most 65534
+    std::vector<RuleDef> rules;                 ///< at most one per unordered material pair; at most 65534
     ParticleBudget budget;
     /// Materials for fixtures without a `material` property, first match wins (assignments.h).
     std::vector<MaterialAssignment> assignments;

@@ -65,7 +65,8 @@ struct EffectEvent
     MaterialId materialB; ///< the rule's materialB
     /// The fixtures with materialA and materialB (scrapes: of the contact whose point is reported; an
     /// ended scrape: as last reported, or of the pair's last contact when it ended). After a `destroyed`
-    /// end they are the addresses the destroyed fixtures had: compare, never dereference.
+    /// end they are the addresses the destroyed fixtures had: compare, never dereference. (So they are after
+    /// any end of a fixture destroyed without Effects::ForgetFixture: contactfx cannot know it is gone.)
     const b2Fixture* fixtureA = nullptr;
     const b2Fixture* fixtureB = nullptr;
     /// Scrape events: the scrape's id, the same from began to ended, never reused. Impacts: an id of

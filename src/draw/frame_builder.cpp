@@ -51,9 +51,13 @@ ScaleBar MakeScaleBar(const Camera& camera)
     {
         std::snprintf(label, sizeof label, "%g cm", std::round(static_cast<double>(metres) * 1000.0) / 10.0);
     }
-    else
+    else if (metres >= 0.001f)
     {
         std::snprintf(label, sizeof label, "%g mm", std::round(static_cast<double>(metres) * 1e6) / 1000.0);
+    }
+    else // below a millimetre (--view down to 1e-6 m): in metres, with an exponent
+    {
+        std::snprintf(label, sizeof label, "%.0e m", static_cast<double>(metres));
     }
     bar.label = label;
     return bar;

@@ -275,6 +275,12 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         moving.localCenter = body->GetLocalCenter();
         moving.turn = dt * moving.angularVelocity;
         moving.angleBefore = body->GetAngle() - moving.turn;
+        if (!Sane(moving.centerBefore) || !Sane(b2Vec2(moving.angleBefore, 0.0f)))
+        {
+            // A huge dt (3e38 s) takes its start pose out of the world, or past a float: skipped too.
+            ++m_skippedBodies;
+            continue;
+        }
         const float pieces = std::ceil(std::abs(moving.turn) / kMaxTurn);
         moving.pieces =
             pieces >= 1.0f ? static_cast<int>(std::min(pieces, static_cast<float>(kMaxPieces))) : 1;

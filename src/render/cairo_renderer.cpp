@@ -260,34 +260,64 @@ void CairoRenderer::DrawScaleBar(const ScaleBar& bar, double textSize)
     cairo_new_path(m_cr);
 }
 
-void CairoRenderer::DrawOverlay(const Overlay& overlay, double size)
+void CairoRenderer::DrawOverlay(const Overlay& overlay, double textSize)
 {
     const std::string& title = overlay.title;
     const std::vector<LegendEntry>& legend = overlay.legend;
-    cairo_identity_matrix(m_cr);
-    const double pad = 0.6 * size;
-    const double lineHeight = 1.35 * size;
-    const double dot = 0.7 * size;
-
-    // Lay out the legend first to size the panel behind the text.
-    std::vector<std::string> labels;
-    labels.reserve(legend.size());
-    double legendWidth = 0.0;
-    for (const LegendEntry& entry : legend)
-    {
-        labels.push_back(entry.name + " " + std::to_string(entry.count));
-        cairo_text_extents_t extents;
-        cairo_text_extents(m_cr, labels.back().c_str(), &extents);
-        legendWidth += dot + 0.4 * size + extents.x_advance + size;
-    }
-    cairo_text_extents_t titleExtents;
-    cairo_text_extents(m_cr, title.c_str(), &titleExtents);
-    const int lines = (title.empty() ? 0 : 1) + (legend.empty() ? 0 : 1);
-    if (lines == 0)
+    if (title.empty() && legend.empty())
     {
         return;
     }
-    const double panelWidth = std::max(titleExtents.x_advance, legendWidth) + 2.0 * pad;
+    cairo_identity_matrix(m_cr);
+    std::vector<std::string> labels;
+    labels.reserve(legend.size());
+    for (const LegendEntry& entry : legend)
+    {
+        labels.push_back(entry.name + " " + std::to_string(entry.count));
+    }
+    const auto advance = [&](const std::string& text)
+    {
+        cairo_text_extents_t extents;
+        cairo_text_extents(m_cr, text.c_str(), &extents);
+        return extents.x_advance;
+    };
+    // The panel fits the picture (sizes from 2 px up): the font shrinks until the widest single item, the
+    // title or one legend entry (dot, gap, label), fits with the panel's padding (3 x 0.6 of the font
+    // size); the legend then wraps into as many lines as it needs. Everything scales with the font size.
+    double widest = title.empty() ? 0.0 : advance(title);
+    for (const std::string& label : labels)
+    {
+        widest = std::max(widest, 1.1 * textSize + advance(label));
+    }
+    const double fitting = 0.98 * static_cast<double>(m_width) * textSize / (widest + 1.8 * textSize);
+    const double size = std::min(textSize, fitting);
+    cairo_set_font_size(m_cr, size);
+    const double pad = 0.6 * size;
+    const double lineHeight = 1.35 * size;
+    const double dot = 0.7 * size;
+    const double room = static_cast<double>(m_width) - 3.0 * pad; // for the text in the panel
+
+    // Lay out the legend first to size the panel behind the text: entry i starts at (x[i], row[i]).
+    std::vector<double> x(labels.size());
+    std::vector<int> row(labels.size());
+    double contentWidth = title.empty() ? 0.0 : advance(title);
+    double at = 0.0;
+    int rows = labels.empty() ? 0 : 1;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+    {
+        const double width = dot + 0.4 * size + advance(labels[i]);
+        if (at > 0.0 && at + width > room)
+        {
+            ++rows;
+            at = 0.0;
+        }
+        x[i] = at;
+        row[i] = rows - 1;
+        contentWidth = std::max(contentWidth, at + width);
+        at += width + size;
+    }
+    const int lines = (title.empty() ? 0 : 1) + rows;
+    const double panelWidth = contentWidth + 2.0 * pad;
     const double panelHeight = lines * lineHeight + pad;
     cairo_set_source_rgba(m_cr, 0.0, 0.0, 0.0, 0.55);
     cairo_rectangle(m_cr, pad * 0.5, pad * 0.5, panelWidth, panelHeight);
@@ -301,22 +331,20 @@ void CairoRenderer::DrawOverlay(const Overlay& overlay, double size)
         cairo_show_text(m_cr, title.c_str());
         y += lineHeight;
     }
-    double x = pad * 1.5;
     for (std::size_t i = 0; i < legend.size(); ++i)
     {
+        const double left = pad * 1.5 + x[i];
+        const double baseline = y + row[i] * lineHeight;
         const Color& c = legend[i].color;
         cairo_set_source_rgb(m_cr, c.r, c.g, c.b);
-        cairo_arc(m_cr, x + 0.5 * dot, y - 0.35 * size, 0.5 * dot, 0.0, kTurn);
+        cairo_arc(m_cr, left + 0.5 * dot, baseline - 0.35 * size, 0.5 * dot, 0.0, kTurn);
         cairo_fill(m_cr);
-        x += dot + 0.4 * size;
         cairo_set_source_rgb(m_cr, 0.92, 0.92, 0.92);
-        cairo_move_to(m_cr, x, y);
+        cairo_move_to(m_cr, left + dot + 0.4 * size, baseline);
         cairo_show_text(m_cr, labels[i].c_str());
-        cairo_text_extents_t extents;
-        cairo_text_extents(m_cr, labels[i].c_str(), &extents);
-        x += extents.x_advance + size;
     }
     cairo_new_path(m_cr);
+    cairo_set_font_size(m_cr, textSize);
 }
 
 Pixel CairoRenderer::PixelAt(int x, int y) const

@@ -231,14 +231,14 @@ void DrawPanel(cairo_t* cr, const Panel& p, const TuningRecorder& recorder, std:
         cairo_line_to(cr, p.x + p.width, std::round(yAt(v)) + 0.5);
         cairo_stroke(cr);
         SetColor(cr, kIntensity);
-        Text(cr, p.x - 6.0, yAt(v) + 4.0, Number(v), 1.0);
+        Text(cr, p.x - 6.0, yAt(v) + 4.0, detail::TickText(v, step), 1.0);
     }
     VerticalText(cr, p.x - 52.0, p.y + 0.5 * p.height, "intensity");
     const double rateStep = NiceStep(rateTop, 5);
     SetColor(cr, particleColor);
     for (double v = 0.0; v <= rateTop + 1e-9; v += rateStep)
     {
-        Text(cr, p.x + p.width + 6.0, yRate(v) + 4.0, Number(v));
+        Text(cr, p.x + p.width + 6.0, yRate(v) + 4.0, detail::TickText(v, rateStep));
     }
     VerticalText(cr, p.x + p.width + 70.0, p.y + 0.5 * p.height, "particles/s");
 
@@ -254,10 +254,11 @@ void DrawPanel(cairo_t* cr, const Panel& p, const TuningRecorder& recorder, std:
     SetColor(cr, particleColor, 0.45);
     cairo_fill(cr);
 
-    // Intensity: the largest sample of each column.
+    // Intensity: the largest sample of each column, across the column (so one step is a line too).
     for (const Column& column : columns)
     {
-        cairo_line_to(cr, xAt(column.start + 0.5 * column.duration), yAt(column.intensity));
+        cairo_line_to(cr, xAt(column.start), yAt(column.intensity));
+        cairo_line_to(cr, xAt(column.start + column.duration), yAt(column.intensity));
     }
     SetColor(cr, kIntensity);
     cairo_set_line_width(cr, 1.5);
@@ -343,7 +344,7 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
         cairo_move_to(cr, x, bottom);
         cairo_line_to(cr, x, bottom + 5.0);
         cairo_stroke(cr);
-        Text(cr, x, bottom + 18.0, Number(t), 0.5);
+        Text(cr, x, bottom + 18.0, detail::TickText(t, step), 0.5);
     }
     Text(cr, kLeft + 0.5 * panelWidth, bottom + 36.0, "time (s)", 0.5);
 
@@ -352,6 +353,21 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
     return EncodePng(cairo_image_surface_get_data(image.get()), cairo_image_surface_get_width(image.get()),
                      cairo_image_surface_get_height(image.get()),
                      cairo_image_surface_get_stride(image.get()));
+}
+
+std::string detail::TickText(double value, double step)
+{
+    char text[32];
+    if (step >= 1.0e5)
+    {
+        std::snprintf(text, sizeof text, "%.3g", value);
+    }
+    else
+    {
+        const int decimals = step < 1.0 ? static_cast<int>(std::ceil(-std::log10(step) - 1e-9)) : 0;
+        std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    }
+    return text;
 }
 
 } // namespace cfx::render

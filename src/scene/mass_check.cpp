@@ -10,8 +10,25 @@ namespace cfx::scene_detail
 namespace
 {
 
-// The central inertia must keep this share of the inertia about the origin, far above float rounding.
-constexpr float kRelativeMargin = 8.0f * b2_epsilon;
+// Box2D computes the inertia about the centre of mass as I - m * (x * x + y * y) and asserts that it is
+// positive. A compiler may fuse any of those products with the sum or the difference that follows
+// (contracted multiply-adds: GCC's default on targets that have them), each rounding differently: the body
+// is accepted only when every way of computing it is positive, so that no build of Box2D asserts.
+bool PositiveInEveryRounding(float inertiaAboutOrigin, float mass, b2Vec2 center)
+{
+    const float x = center.x;
+    const float y = center.y;
+    const float squares[] = {x * x + y * y, std::fma(x, x, y * y), std::fma(y, y, x * x)};
+    for (const float square : squares)
+    {
+        if (!(inertiaAboutOrigin - mass * square > 0.0f) ||
+            !(std::fma(-mass, square, inertiaAboutOrigin) > 0.0f))
+        {
+            return false;
+        }
+    }
+    return true;
+}
 
 bool Finite(b2Vec2 v)
 {
@@ -20,8 +37,7 @@ bool Finite(b2Vec2 v)
 
 std::optional<std::string> CheckCentralInertia(float inertiaAboutOrigin, float mass, b2Vec2 center)
 {
-    const float central = inertiaAboutOrigin - mass * b2Dot(center, center);
-    if (!(central > kRelativeMargin * inertiaAboutOrigin))
+    if (!PositiveInEveryRounding(inertiaAboutOrigin, mass, center))
     {
         return "rotational inertia about the centre of mass would not be positive (inertia about the body "
                "origin " +

@@ -151,7 +151,7 @@ bool Stiffness(const JointModel& model, const JointType& type, bool angular, Joi
 
 Spring LinearSpring(float stiffness, float damping, b2Joint& joint)
 {
-    return SpringFromStiffness(stiffness, damping, LinearSpringMass(*joint.GetBodyA(), *joint.GetBodyB()));
+    return SpringFromStiffness(stiffness, damping, *joint.GetBodyA(), *joint.GetBodyB(), false);
 }
 
 void SetSpring(JointModel& model, const Spring& spring)
@@ -422,8 +422,8 @@ bool ExtractWeld(b2Joint& joint, JointModel& model, const JointExtract&)
     model.anchorA = weld.GetLocalAnchorA();
     model.anchorB = weld.GetLocalAnchorB();
     model.referenceAngle = weld.GetReferenceAngle();
-    SetSpring(model, SpringFromStiffness(weld.GetStiffness(), weld.GetDamping(),
-                                         AngularSpringInertia(*joint.GetBodyA(), *joint.GetBodyB())));
+    SetSpring(model, SpringFromStiffness(weld.GetStiffness(), weld.GetDamping(), *joint.GetBodyA(),
+                                         *joint.GetBodyB(), true));
     return true;
 }
 

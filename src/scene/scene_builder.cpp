@@ -139,6 +139,13 @@ void SetUpMass(b2Body& body, const BodyModel& model, DiagnosticList& diagnostics
         return;
     }
     body.ResetMassData();
+    if (body.GetMass() == 0.0f)
+    {
+        // Box2D 2.3, whose scenes RUBE saves, gives a dynamic body without mass a mass of 1 at its origin
+        // (and no rotational inertia); 2.4.1 leaves it at 0, where gravity does not move it.
+        const b2MassData unit{1.0f, b2Vec2(0.0f, 0.0f), 0.0f};
+        body.SetMassData(&unit);
+    }
 }
 
 b2Body* CreateBody(b2World& world, const BodyModel& model, Scene& scene, DiagnosticList& diagnostics)

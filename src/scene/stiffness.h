@@ -15,13 +15,12 @@ struct Spring
     float dampingRatio = 0.0f;
 };
 
-/// The effective mass b2LinearStiffness uses.
-float LinearSpringMass(const b2Body& bodyA, const b2Body& bodyB);
-/// The effective inertia b2AngularStiffness uses.
-float AngularSpringInertia(const b2Body& bodyA, const b2Body& bodyB);
-
-/// Frequency and damping ratio that b2LinearStiffness / b2AngularStiffness turn back into `stiffness` and
-/// `damping` for this effective mass (or inertia). Zero when there is no stiffness or no mass.
-Spring SpringFromStiffness(float stiffness, float damping, float massOrInertia);
+/// Frequency and damping ratio of a joint's spring between `bodyA` and `bodyB` that b2LinearStiffness
+/// (`angular`: b2AngularStiffness) turns back into exactly `stiffness` and `damping` when such floats lie
+/// within a few steps of the computed inverse (so a saved scene loads with the springs it was saved with, and
+/// saving it again writes the same numbers); otherwise the computed inverse. Zero when there is no stiffness
+/// or no mass (inertia).
+Spring SpringFromStiffness(float stiffness, float damping, const b2Body& bodyA, const b2Body& bodyB,
+                           bool angular);
 
 } // namespace cfx::scene_detail

@@ -361,6 +361,31 @@ TEST(CliOutputs, AnFfmpegThatExitsZeroWithABrokenVideoLeavesNoFile)
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"clip.mp4"});
 }
 
+// A trial filled the disk while ffmpeg added the audio track: that ffmpeg exited 0, the file it wrote was
+// cut short, and the message said only "ffmpeg wrote no audio stream". A stand-in ffmpeg that encodes the
+// video as the real one does and then writes garbage where the audio track should be added.
+TEST(CliOutputs, AVideoWhoseAudioTrackIsCutShortIsAnIncompleteVideo)
+{
+    const fs::path dir = ScratchDir("outputs_cut_audio");
+    const CliResult real = RunCommand("command -v ffmpeg");
+    ASSERT_EQ(real.exitCode, 0) << "ffmpeg is needed";
+    const std::string ffmpeg = real.output.substr(0, real.output.find('\n'));
+    fs::create_directories(dir / "bin");
+    fs::create_directories(dir / "out");
+    std::ofstream(dir / "bin" / "ffmpeg")
+        << "#!/bin/sh\ncase \"$*\" in *\"-c:a aac\"*)\n"
+           "  for a; do last=$a; done; echo partial > \"$last\"; exit 0;;\nesac\n"
+           "exec '"
+        << ffmpeg << "' \"$@\"\n";
+    fs::permissions(dir / "bin" / "ffmpeg", fs::perms::owner_all);
+    const CliResult result =
+        RunCommand("PATH='" + (dir / "bin").string() + ":'\"$PATH\" " + std::string(CONTACTFX_BINARY_DIR) +
+                   "/bin/contactfx render --scene grinder --seconds 0.5 --fps 10" + kTiny + "--out " +
+                   (dir / "out" / "g.mp4").string());
+    ExpectError(result, {"g.mp4", "incomplete", "a full disk?", "no file written"}, "audio cut short");
+    EXPECT_TRUE(FilesIn(dir / "out").empty()) << Join(FilesIn(dir / "out"));
+}
+
 TEST(CliOutputs, AnInterruptedRunLeavesNoFile)
 {
     const fs::path dir = ScratchDir("outputs_interrupted");

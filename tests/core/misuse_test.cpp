@@ -245,6 +245,34 @@ TEST(EffectsMisuse, StepRefusesZeroNegativeAndNonFiniteTimes)
     }
 }
 
+// A huge but finite step time is accepted. A trial's 3e38 s hung the step: a sliding body's start pose
+// (its centre less dt times its velocity) overflowed, and so did the grid of moving shapes built from it.
+// Such a body is skipped and counted like any other body beyond 1e7.
+TEST(EffectsMisuse, AHugeFiniteStepTimeSkipsTheBodiesItThrowsOutOfTheWorld)
+{
+    for (const float dt : {1.0e30f, 3.0e38f, std::numeric_limits<float>::max()})
+    {
+        SlideScene scene;
+        scene.Slide(12.0f, 30);
+        ASSERT_GT(scene.effects->Stats().live, 0u);
+        const std::uint64_t skipped = scene.effects->Stats().skippedBodies;
+        scene.world->Step(kDt, 8, 3);
+        scene.effects->Step(dt);
+        EXPECT_EQ(scene.effects->Stats().skippedBodies, skipped + 1) << dt << ": the sliding box";
+        const ParticleView view = scene.effects->Particles();
+        for (std::uint32_t i = 0; i < view.count; ++i)
+        {
+            EXPECT_TRUE(std::isfinite(view.positionX[view.Slot(i)]) &&
+                        std::isfinite(view.positionY[view.Slot(i)]));
+        }
+        for (const EffectEvent& event : scene.effects->Events())
+        {
+            ExpectFinite(event);
+        }
+        scene.Slide(12.0f, 2); // and it goes on
+    }
+}
+
 TEST(EffectsMisuse, StepRefusesANonFiniteGravity)
 {
     SlideScene scene;

@@ -131,6 +131,26 @@ TEST(Config, ValidateBoundsEveryNumber)
 // Each rule has room for budget.contacts touching contacts of its own: a trial's 45,150 rules with room
 // for 1,000,000 contacts each reserved 2.9 TB at creation (15 s; on a system that does not overcommit,
 // std::bad_alloc). Rules times contacts is bounded, and the message names budget.contacts.
+// Ids are 16 bits with one value for "none": each list holds at most 65534 entries, and the message says how
+// many it found (a trial saw it for materials only).
+TEST(Config, EachListsLimitNamesTheCountFound)
+{
+    EffectsConfig config = DefaultPreset();
+    config.particleTypes.resize(65535, config.particleTypes[0]);
+    config.rules.resize(65535, config.rules[0]);
+    std::vector<std::string> limits;
+    for (const Diagnostic& problem : Validate(config))
+    {
+        if (problem.path == "particleTypes" || problem.path == "rules")
+        {
+            limits.push_back(problem.path + ": " + problem.message);
+        }
+    }
+    EXPECT_EQ(limits,
+              (std::vector<std::string>{"particleTypes: expected at most 65534 particle types, found 65535",
+                                        "rules: expected at most 65534 rules, found 65535"}));
+}
+
 TEST(Config, TheContactRoomOfAllRulesIsBounded)
 {
     EffectsConfig config = DefaultPreset();

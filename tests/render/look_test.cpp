@@ -211,6 +211,11 @@ TEST(Look, TheScaleBarIsARoundLengthOfAtMostAFifthOfTheImage)
     EXPECT_EQ(MakeScaleBar(camera).label, "20 m");
     camera.pixelsPerMetre = 6000.0f; // a fifth is 6.7 mm: 5 mm
     EXPECT_EQ(MakeScaleBar(camera).label, "5 mm");
+    // Below a millimetre (a trial's --view 1e-6 read "0 mm"): in metres.
+    camera.pixelsPerMetre = 200.0f / 1.0e-6f; // a fifth is 2e-7 m
+    EXPECT_EQ(MakeScaleBar(camera).label, "2e-07 m");
+    camera.pixelsPerMetre = 6.0e5f; // a fifth is 6.7e-5 m: 5e-5 m
+    EXPECT_EQ(MakeScaleBar(camera).label, "5e-05 m");
 }
 
 TEST(Look, TheScaleBarShowsOnlyWhenAsked)

@@ -364,6 +364,41 @@ TEST_F(SceneFixture, TheOverlayWritesTextInTheTopLeftCornerOnlyWhenAsked)
     EXPECT_EQ(corner.r, same.r);
 }
 
+// A trial's 160x90 picture had its overlay cut at the right edge ("dirt 4..."), and a 200x400 one too. The
+// panel fits the picture: its font shrinks to fit its widest item, and the legend wraps.
+TEST(Renderer, TheOverlayFitsSmallAndNarrowPictures)
+{
+    for (const auto& [width, height] : {std::pair{160, 90}, std::pair{200, 400}, std::pair{60, 40}})
+    {
+        DrawList list;
+        list.Begin(MakeCamera(width, height, 1.0f, b2Vec2(0.0f, 0.0f)), DrawStyle{}.background);
+        list.backgroundBottom = list.background;
+        CairoRenderer plain(width, height);
+        plain.Render(list);
+        list.overlay.shown = true;
+        list.overlay.title = "t = 10.60 s   default effects";
+        list.overlay.legend = {LegendEntry{"smoke", {0.5f, 0.5f, 0.5f, 1.0f}, 2},
+                               LegendEntry{"sparks", {0.9f, 1.0f, 0.1f, 1.0f}, 451},
+                               LegendEntry{"dirt", {1.0f, 0.6f, 0.4f, 1.0f}, 413}};
+        CairoRenderer annotated(width, height);
+        annotated.Render(list);
+        int drawn = 0;
+        for (int y = 0; y < height; ++y)
+        {
+            for (int x = 0; x < width; ++x)
+            {
+                const Pixel a = plain.PixelAt(x, y);
+                const Pixel b = annotated.PixelAt(x, y);
+                const bool changed = a.r != b.r || a.g != b.g || a.b != b.b;
+                drawn += changed ? 1 : 0;
+                EXPECT_FALSE(changed && x >= width - 1)
+                    << width << "x" << height << ": at the right edge, row " << y;
+            }
+        }
+        EXPECT_GT(drawn, width * height / 20) << width << "x" << height;
+    }
+}
+
 TEST(Renderer, EncodesAPngOfItsSize)
 {
     DrawList list;

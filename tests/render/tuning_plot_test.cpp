@@ -5,6 +5,8 @@
 #include "contactfx/render/tuning_plot.h"
 #include "png_header.h"
 
+#include <cairo.h>
+#include <cstring>
 #include <gtest/gtest.h>
 
 namespace cfx::test
@@ -107,6 +109,69 @@ TEST(TuningPlot, IsAPngWithOnePanelPerRule)
     ASSERT_TRUE(two.has_value());
     // One rule fewer: one panel of 100 px and its gap fewer.
     EXPECT_GT(one->second, two->second + 100u);
+}
+
+// A trial's plot of a run of 0.01 s labelled its time axis "0, 2e-03, 4e-03, ..., 0.01, 0.012": each axis
+// has one format.
+TEST(TuningPlot, EachAxisLabelsItsTicksInOneFormat)
+{
+    std::vector<std::string> ticks;
+    for (int i = 0; i <= 8; ++i)
+    {
+        ticks.push_back(render::detail::TickText(0.002 * i, 0.002));
+    }
+    EXPECT_EQ(ticks, (std::vector<std::string>{"0.000", "0.002", "0.004", "0.006", "0.008", "0.010", "0.012",
+                                               "0.014", "0.016"}));
+    EXPECT_EQ(render::detail::TickText(1.5, 0.5), "1.5");
+    EXPECT_EQ(render::detail::TickText(2.0, 0.5), "2.0");
+    EXPECT_EQ(render::detail::TickText(15000.0, 5000.0), "15000");
+    EXPECT_EQ(render::detail::TickText(1.2e6, 2.0e5), "1.2e+06");
+}
+
+// The same trial's plot of one step had no intensity line: it joined the middles of the columns, and one
+// column has no line between middles. Each column's intensity runs across it.
+TEST(TuningPlot, OneStepHasAnIntensityLine)
+{
+    const EffectsConfig config = DefaultPreset();
+    render::TuningRecorder recorder(config.rules.size());
+    EffectsStats stats = StepStats(config.rules.size(), 0);
+    stats.rules[0].intensityMaxLastStep = 30.0f;
+    recorder.Record(stats, 1.0f / 60.0f);
+    const std::string png = render::TuningPlotPng(recorder, config, "one step", 640, 100);
+    std::size_t read = 0;
+    const auto reader = [](void* closure, unsigned char* data, unsigned int length)
+    {
+        auto* source = static_cast<std::pair<const std::string*, std::size_t*>*>(closure);
+        if (*source->second + length > source->first->size())
+        {
+            return CAIRO_STATUS_READ_ERROR;
+        }
+        std::memcpy(data, source->first->data() + *source->second, length);
+        *source->second += length;
+        return CAIRO_STATUS_SUCCESS;
+    };
+    std::pair<const std::string*, std::size_t*> source{&png, &read};
+    cairo_surface_t* image = cairo_image_surface_create_from_png_stream(reader, &source);
+    ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+    const int width = cairo_image_surface_get_width(image);
+    const int height = cairo_image_surface_get_height(image);
+    const int stride = cairo_image_surface_get_stride(image);
+    const unsigned char* data = cairo_image_surface_get_data(image);
+    // Columns of the middle half of the picture (no axis labels there) with a pixel of the intensity's blue
+    // (0.40, 0.78, 1.00), more or less: Cairo stores B, G, R, A on little-endian machines.
+    int columns = 0;
+    for (int x = width / 4; x < 3 * width / 4; ++x)
+    {
+        bool blue = false;
+        for (int y = 0; y < height; ++y)
+        {
+            const unsigned char* p = data + y * stride + 4 * x;
+            blue = blue || (p[0] > 120 && p[0] > p[2] + 60);
+        }
+        columns += blue ? 1 : 0;
+    }
+    cairo_surface_destroy(image);
+    EXPECT_EQ(columns, 3 * width / 4 - width / 4);
 }
 
 } // namespace cfx::test

@@ -346,14 +346,16 @@ TEST(EffectsJson, AColoursRangeProblemsComeWithItsWrongKindOfElement)
     EXPECT_EQ(problems[3], "particleTypes[0].colorStart[3]: expected a number between 0 and 1, found 2");
 }
 
-// A trial's names with a line break forged lines of validate's output, and a NUL cut the run summary's.
-// Names may not hold control characters, and a name a message quotes is escaped.
+// A trial's names with a line break forged lines of validate's output, and a NUL cut the run summary's
+// (a later trial did it with the config's own name). Names may not hold control characters, and a name a
+// message quotes is escaped.
 TEST(EffectsJson, NamesWithControlCharactersAreRefusedAndQuotedEscaped)
 {
     const std::vector<std::string> problems = ProblemsOf(
-        R"({"materials": ["a\nb: ok", "st\u0000eel"], "particleTypes": [{"name": "p\tq"}],
+        R"({"name": "x\ny.effects.json: ok", "materials": ["a\nb: ok", "st\u0000eel"], "particleTypes": [{"name": "p\tq"}],
             "rules": [{"materialA": "a\nb: ok", "materialB": "zz\nfake.json: ok", "particleType": "p\tq"}]})");
     const std::vector<std::string> expected = {
+        "name: expected a name without control characters, found \"x\\ny.effects.json: ok\"",
         "materials[0]: expected a name without control characters, found \"a\\nb: ok\"",
         "materials[1]: expected a name without control characters, found \"st\\u0000eel\"",
         "particleTypes[0].name: expected a name without control characters, found \"p\\tq\"",

@@ -410,6 +410,19 @@ TEST(RubeErrors, MassFarFromTheBodyOriginIsReportedNotAsserted)
         "massData-I": 1, "fixture": [{"density": 1, "circle": {"radius": 1}}]})"));
     EXPECT_TRUE(HasDiagnostic(saved, "body[0].massData-I", "rotational inertia")) << test::Dump(saved);
 
+    // Far but not that far: Box2D computes a positive inertia for these in every rounding, and loads them (a
+    // trial's 10 cm pebble 50 m from its body's origin and 1 m crate 1 km from it were refused by a check
+    // that asked for a margin of 8 float epsilons).
+    for (const char* body :
+         {R"({"type": 2, "fixture": [{"density": 1, "polygon": {"vertices": {"x": [50, 50.1,
+                                 50.1, 50], "y": [0, 0, 0.1, 0.1]}}}]})",
+          R"({"type": 2, "fixture": [{"density": 1, "polygon": {"vertices": {"x": [1000, 1001,
+                                 1001, 1000], "y": [0, 0, 1, 1]}}}]})"})
+    {
+        const Scene scene = LoadRubeString(World(body), "far.json");
+        EXPECT_GT(scene.bodies[0].body->GetInertia(), 0.0f) << body;
+    }
+
     // With fixed rotation there is nothing to subtract.
     EXPECT_NO_THROW(LoadRubeString(World(R"({"type": 2, "fixedRotation": true, "massData-mass": 10,
         "massData-center": {"x": 5, "y": 0}, "massData-I": 1, "fixture": [{"density": 1,

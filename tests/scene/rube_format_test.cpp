@@ -155,6 +155,31 @@ TEST(RubeFormat, MassDataIsAppliedAfterTheFixtures)
     EXPECT_FLOAT_EQ(computed.bodies.at(0).body->GetMass(), 1.0f); // unit box, density 1
 }
 
+// RUBE scenes are Box2D 2.3 scenes, where a dynamic body without mass gets 1 kg and falls; Box2D 2.4.1 leaves
+// it at 0 kg, floating (a trial's ball whose fixture had no density, and an anchor body without fixtures).
+TEST(RubeFormat, ADynamicBodyWithoutMassWeighsOneKilogramAndFalls)
+{
+    Scene scene =
+        LoadRubeString(World(R"({"name": "ball", "type": 2, "awake": true, "position": {"x": 0, "y": 10},
+        "fixture": [{"circle": {"radius": 0.5, "center": {"x": 0.3, "y": 0}}}]},
+        {"name": "anchor", "type": 2, "awake": true, "position": {"x": 5, "y": 10}})"),
+                       "massless.json");
+    for (const SceneBody& body : scene.bodies)
+    {
+        EXPECT_EQ(body.body->GetMass(), 1.0f) << body.name;
+        EXPECT_EQ(body.body->GetLocalCenter(), b2Vec2(0.0f, 0.0f)) << body.name;
+        EXPECT_EQ(body.body->GetInertia(), 0.0f) << body.name;
+    }
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+    }
+    for (const SceneBody& body : scene.bodies)
+    {
+        EXPECT_LT(body.body->GetPosition().y, 6.0f) << body.name << ": fell for 1 s";
+    }
+}
+
 TEST(RubeFormat, VelocityIsTheVelocityOfTheCentreOfMass)
 {
     // The fixture is off the body origin: Box2D would move the velocity with the centre of mass.

@@ -73,4 +73,12 @@ private:
 std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& config,
                           const std::string& title, int width = 1200, int panelHeight = 170);
 
+namespace detail
+{
+/// The text of a tick on an axis whose ticks are `step` apart (> 0), in one format for the whole axis: the
+/// decimals the step needs (steps of 0.002: "0.000", "0.002", ...), or three significant digits from steps
+/// of 100,000 on.
+std::string TickText(double value, double step);
+} // namespace detail
+
 } // namespace cfx::render
