@@ -96,11 +96,22 @@ private:
 };
 
 // Names show in line-based output (validate, the run summary): a line break or a NUL in one would forge or
-// cut a line.
+// cut a line, and so would a C1 control (U+0085 NEXT LINE; U+009B starts a terminal's escape sequence).
+// C0 controls and DEL are single bytes; C1 controls are U+0080 .. U+009F, in UTF-8 0xC2 0x80 .. 0xC2 0x9F.
 bool HasControlCharacter(std::string_view name)
 {
-    return std::any_of(name.begin(), name.end(),
-                       [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+    for (std::size_t i = 0; i < name.size(); ++i)
+    {
+        const auto byte = static_cast<unsigned char>(name[i]);
+        const bool c1 = byte == 0xc2 && i + 1 < name.size() &&
+                        static_cast<unsigned char>(name[i + 1]) >= 0x80 &&
+                        static_cast<unsigned char>(name[i + 1]) <= 0x9f;
+        if (byte < 0x20 || byte == 0x7f || c1)
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 const std::string kNoControlCharacters = "expected a name without control characters, found ";

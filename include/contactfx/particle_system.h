@@ -131,7 +131,9 @@ struct ParticleCounters
     /// Nothing not finite reaches the collision or the draw data.
     std::uint64_t nonFinite = 0;
     /// Body steps in which a body was left out of particle collision because its position, rotation,
-    /// centre or velocities were not finite, or beyond 1e7 (m, m/s, rad/s).
+    /// centre or velocities were not finite, or beyond 1e7 (m, m/s, rad/s), or its pose at the start of the
+    /// step (its centre less dt times its velocity, its angle less dt times its angular velocity) was: a
+    /// step time too long for its speed (a body at 8 m/s with dt = 1e7 s).
     std::uint64_t skippedBodies = 0;
     /// Particle hit groups left out of Hits() because a step had more than ParticleBudget::particleHits.
     std::uint64_t droppedHitGroups = 0;

@@ -51,8 +51,8 @@ struct EffectsStats
     /// Particles that died, or were never stored, because their position or velocity was not finite or
     /// beyond 1e7 (m, m/s): thrown out of the world by absurd numbers (ParticleCounters::nonFinite).
     std::uint64_t nonFinite = 0;
-    /// Body steps in which a body was left out of particle collision because its state was not finite
-    /// or beyond 1e7 (ParticleCounters::skippedBodies).
+    /// Body steps in which a body was left out of particle collision because its state, or its pose at
+    /// the start of the step, was not finite or beyond 1e7 (ParticleCounters::skippedBodies).
     std::uint64_t skippedBodies = 0;
     /// Materials dropped because their fixture had been destroyed without Effects::ForgetFixture and a
     /// different fixture (another body, shape or geometry) took its address: it did not inherit them.

@@ -260,6 +260,9 @@ void CairoRenderer::DrawScaleBar(const ScaleBar& bar, double textSize)
     cairo_new_path(m_cr);
 }
 
+// The smallest font size (px) the overlay is drawn at: a picture without room for it gets none.
+constexpr double kSmallestOverlayText = 5.0;
+
 void CairoRenderer::DrawOverlay(const Overlay& overlay, double textSize)
 {
     const std::string& title = overlay.title;
@@ -281,44 +284,58 @@ void CairoRenderer::DrawOverlay(const Overlay& overlay, double textSize)
         cairo_text_extents(m_cr, text.c_str(), &extents);
         return extents.x_advance;
     };
-    // The panel fits the picture (sizes from 2 px up): the font shrinks until the widest single item, the
-    // title or one legend entry (dot, gap, label), fits with the panel's padding (3 x 0.6 of the font
-    // size); the legend then wraps into as many lines as it needs. Everything scales with the font size.
-    double widest = title.empty() ? 0.0 : advance(title);
-    for (const std::string& label : labels)
-    {
-        widest = std::max(widest, 1.1 * textSize + advance(label));
-    }
-    const double fitting = 0.98 * static_cast<double>(m_width) * textSize / (widest + 1.8 * textSize);
-    const double size = std::min(textSize, fitting);
-    cairo_set_font_size(m_cr, size);
-    const double pad = 0.6 * size;
-    const double lineHeight = 1.35 * size;
-    const double dot = 0.7 * size;
-    const double room = static_cast<double>(m_width) - 3.0 * pad; // for the text in the panel
-
-    // Lay out the legend first to size the panel behind the text: entry i starts at (x[i], row[i]).
+    // The panel fits the picture, whatever its size: laid out at the font size asked for, the legend
+    // wrapping into as many lines as the width needs; when the panel (with a margin of half its padding
+    // around it) is still wider or taller than the picture, the font shrinks by what it overflows and the
+    // layout is done again. Entry i of the legend starts at (x[i], row[i]) in the panel's text.
     std::vector<double> x(labels.size());
     std::vector<int> row(labels.size());
-    double contentWidth = title.empty() ? 0.0 : advance(title);
-    double at = 0.0;
-    int rows = labels.empty() ? 0 : 1;
-    for (std::size_t i = 0; i < labels.size(); ++i)
+    double size = textSize;
+    double pad = 0.0;
+    double lineHeight = 0.0;
+    double dot = 0.0;
+    double panelWidth = 0.0;
+    double panelHeight = 0.0;
+    int lines = 0;
+    bool fits = false;
+    for (int attempt = 0; attempt < 16 && !fits; ++attempt)
     {
-        const double width = dot + 0.4 * size + advance(labels[i]);
-        if (at > 0.0 && at + width > room)
+        cairo_set_font_size(m_cr, size);
+        pad = 0.6 * size;
+        lineHeight = 1.35 * size;
+        dot = 0.7 * size;
+        const double room = static_cast<double>(m_width) - 3.0 * pad; // for the text in the panel
+        double contentWidth = title.empty() ? 0.0 : advance(title);
+        double at = 0.0;
+        int rows = labels.empty() ? 0 : 1;
+        for (std::size_t i = 0; i < labels.size(); ++i)
         {
-            ++rows;
-            at = 0.0;
+            const double width = dot + 0.4 * size + advance(labels[i]);
+            if (at > 0.0 && at + width > room)
+            {
+                ++rows;
+                at = 0.0;
+            }
+            x[i] = at;
+            row[i] = rows - 1;
+            contentWidth = std::max(contentWidth, at + width);
+            at += width + size;
         }
-        x[i] = at;
-        row[i] = rows - 1;
-        contentWidth = std::max(contentWidth, at + width);
-        at += width + size;
+        lines = (title.empty() ? 0 : 1) + rows;
+        panelWidth = contentWidth + 2.0 * pad;
+        panelHeight = lines * lineHeight + pad;
+        // At least a pixel to spare on the far sides: anti-aliased edges reach into the next pixel.
+        const double margin = std::max(pad, 2.0);
+        const double overflow = std::max((panelWidth + margin) / static_cast<double>(m_width),
+                                         (panelHeight + margin) / static_cast<double>(m_height));
+        fits = overflow <= 1.0;
+        size *= fits ? 1.0 : 0.98 / overflow;
     }
-    const int lines = (title.empty() ? 0 : 1) + rows;
-    const double panelWidth = contentWidth + 2.0 * pad;
-    const double panelHeight = lines * lineHeight + pad;
+    if (!fits || size < kSmallestOverlayText)
+    {
+        cairo_set_font_size(m_cr, textSize);
+        return; // no room for legible text: no overlay rather than a cut or unreadable one
+    }
     cairo_set_source_rgba(m_cr, 0.0, 0.0, 0.0, 0.55);
     cairo_rectangle(m_cr, pad * 0.5, pad * 0.5, panelWidth, panelHeight);
     cairo_fill(m_cr);

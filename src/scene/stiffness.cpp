@@ -1,5 +1,9 @@
 #include "scene/stiffness.h"
 
+#include "scene/rube_limits.h"
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace cfx::scene_detail
@@ -18,32 +22,36 @@ float Combine(float a, float b)
     return a > 0.0f ? a : b;
 }
 
-// How many floats on each side of the computed inverse are tried.
+// The largest frequency and damping ratio the reader accepts.
+constexpr float kMostFrequency = static_cast<float>(kFrequency.max);
+constexpr float kMostDampingRatio = static_cast<float>(kDampingRatio.max);
+
+// How many floats on each side of a computed inverse are tried.
 constexpr int kSteps = 8;
 
-// Of the floats within kSteps of `guess` (nearest first), one for which `matches` holds; `guess` if none.
-template <typename Matches> float Nearby(float guess, Matches matches)
+// The floats within kSteps of `guess` (clamped to [0, most]) that lie in [0, most], nearest first.
+std::array<float, 2 * kSteps + 1> Nearby(float guess, float most, int& count)
 {
-    if (matches(guess))
-    {
-        return guess;
-    }
-    float below = guess;
-    float above = guess;
+    std::array<float, 2 * kSteps + 1> found{};
+    count = 0;
+    const float middle = std::clamp(guess, 0.0f, most);
+    found[count++] = middle;
+    float below = middle;
+    float above = middle;
     for (int step = 0; step < kSteps; ++step)
     {
         below = std::nextafter(below, -INFINITY);
         above = std::nextafter(above, INFINITY);
-        if (below >= 0.0f && matches(below))
+        if (below >= 0.0f)
         {
-            return below;
+            found[count++] = below;
         }
-        if (matches(above))
+        if (above <= most)
         {
-            return above;
+            found[count++] = above;
         }
     }
-    return guess;
+    return found;
 }
 
 } // namespace
@@ -70,23 +78,36 @@ Spring SpringFromStiffness(float stiffness, float damping, const b2Body& bodyA, 
             b2LinearStiffness(k, d, frequency, dampingRatio, &bodyA, &bodyB);
         }
     };
-    // The stiffness depends on the frequency alone, the damping on both.
-    spring.frequency = Nearby(omega / (2.0f * b2_pi),
-                              [&](float frequency)
-                              {
-                                  float k = 0.0f;
-                                  float d = 0.0f;
-                                  convert(frequency, 0.0f, k, d);
-                                  return k == stiffness;
-                              });
-    spring.dampingRatio = Nearby(damping / (2.0f * massOrInertia * omega),
-                                 [&](float dampingRatio)
-                                 {
-                                     float k = 0.0f;
-                                     float d = 0.0f;
-                                     convert(spring.frequency, dampingRatio, k, d);
-                                     return d == damping;
-                                 });
+    // The nearest pair that converts back exactly: the stiffness depends on the frequency alone (several
+    // frequencies may give it), the damping on both. Both stay within the ranges the reader accepts.
+    const float frequencyGuess = omega / (2.0f * b2_pi);
+    const float ratioGuess = damping / (2.0f * massOrInertia * omega);
+    int frequencies = 0;
+    const auto frequencyCandidates = Nearby(frequencyGuess, kMostFrequency, frequencies);
+    int ratios = 0;
+    const auto ratioCandidates = Nearby(ratioGuess, kMostDampingRatio, ratios);
+    spring.frequency = frequencyCandidates[0];
+    spring.dampingRatio = ratioCandidates[0];
+    for (int i = 0; i < frequencies; ++i)
+    {
+        float k = 0.0f;
+        float d = 0.0f;
+        convert(frequencyCandidates[i], 0.0f, k, d);
+        if (k != stiffness)
+        {
+            continue;
+        }
+        for (int j = 0; j < ratios; ++j)
+        {
+            convert(frequencyCandidates[i], ratioCandidates[j], k, d);
+            if (d == damping)
+            {
+                spring.frequency = frequencyCandidates[i];
+                spring.dampingRatio = ratioCandidates[j];
+                return spring;
+            }
+        }
+    }
     return spring;
 }
 
