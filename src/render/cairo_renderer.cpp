@@ -263,6 +263,58 @@ void CairoRenderer::DrawScaleBar(const ScaleBar& bar, double textSize)
 // The smallest font size (px) the overlay is drawn at: a picture without room for it gets none.
 constexpr double kSmallestOverlayText = 5.0;
 
+namespace
+{
+
+// Where the overlay's parts go at one font size (px): the panel at (pad / 2, pad / 2), its title on the
+// first line, legend entry i at x[i] (from the text's left) on legend line row[i], wrapped to fit `room`.
+struct OverlayLayout
+{
+    double size = 0.0;
+    double pad = 0.0;
+    double lineHeight = 0.0;
+    double dot = 0.0;
+    double width = 0.0; ///< the panel's
+    double height = 0.0;
+    std::vector<double> x;
+    std::vector<int> row;
+
+    OverlayLayout(cairo_t* cr, const std::string& title, const std::vector<std::string>& labels,
+                  double fontSize, double room)
+        : size(fontSize), pad(0.6 * fontSize), lineHeight(1.35 * fontSize), dot(0.7 * fontSize),
+          x(labels.size()), row(labels.size())
+    {
+        cairo_set_font_size(cr, size);
+        const auto advance = [&](const std::string& text)
+        {
+            cairo_text_extents_t extents;
+            cairo_text_extents(cr, text.c_str(), &extents);
+            return extents.x_advance;
+        };
+        const double textRoom = room - 3.0 * pad;
+        double content = title.empty() ? 0.0 : advance(title);
+        double at = 0.0;
+        int rows = labels.empty() ? 0 : 1;
+        for (std::size_t i = 0; i < labels.size(); ++i)
+        {
+            const double entry = dot + 0.4 * size + advance(labels[i]);
+            if (at > 0.0 && at + entry > textRoom)
+            {
+                ++rows;
+                at = 0.0;
+            }
+            x[i] = at;
+            row[i] = rows - 1;
+            content = std::max(content, at + entry);
+            at += entry + size;
+        }
+        width = content + 2.0 * pad;
+        height = ((title.empty() ? 0 : 1) + rows) * lineHeight + pad;
+    }
+};
+
+} // namespace
+
 void CairoRenderer::DrawOverlay(const Overlay& overlay, double textSize)
 {
     const std::string& title = overlay.title;
@@ -278,89 +330,54 @@ void CairoRenderer::DrawOverlay(const Overlay& overlay, double textSize)
     {
         labels.push_back(entry.name + " " + std::to_string(entry.count));
     }
-    const auto advance = [&](const std::string& text)
-    {
-        cairo_text_extents_t extents;
-        cairo_text_extents(m_cr, text.c_str(), &extents);
-        return extents.x_advance;
-    };
     // The panel fits the picture, whatever its size: laid out at the font size asked for, the legend
-    // wrapping into as many lines as the width needs; when the panel (with a margin of half its padding
-    // around it) is still wider or taller than the picture, the font shrinks by what it overflows and the
-    // layout is done again. Entry i of the legend starts at (x[i], row[i]) in the panel's text.
-    std::vector<double> x(labels.size());
-    std::vector<int> row(labels.size());
-    double size = textSize;
-    double pad = 0.0;
-    double lineHeight = 0.0;
-    double dot = 0.0;
-    double panelWidth = 0.0;
-    double panelHeight = 0.0;
-    int lines = 0;
+    // wrapping into as many lines as the width needs; while the panel and a margin (half its padding, at
+    // least 2 px: anti-aliased edges reach into the next pixel) are wider or taller than the picture, the
+    // font shrinks by what they overflow and the layout is done again.
+    const double width = static_cast<double>(m_width);
+    const double height = static_cast<double>(m_height);
+    OverlayLayout layout(m_cr, title, labels, textSize, width);
     bool fits = false;
-    for (int attempt = 0; attempt < 16 && !fits; ++attempt)
+    for (int attempt = 0; attempt < 16; ++attempt)
     {
-        cairo_set_font_size(m_cr, size);
-        pad = 0.6 * size;
-        lineHeight = 1.35 * size;
-        dot = 0.7 * size;
-        const double room = static_cast<double>(m_width) - 3.0 * pad; // for the text in the panel
-        double contentWidth = title.empty() ? 0.0 : advance(title);
-        double at = 0.0;
-        int rows = labels.empty() ? 0 : 1;
-        for (std::size_t i = 0; i < labels.size(); ++i)
-        {
-            const double width = dot + 0.4 * size + advance(labels[i]);
-            if (at > 0.0 && at + width > room)
-            {
-                ++rows;
-                at = 0.0;
-            }
-            x[i] = at;
-            row[i] = rows - 1;
-            contentWidth = std::max(contentWidth, at + width);
-            at += width + size;
-        }
-        lines = (title.empty() ? 0 : 1) + rows;
-        panelWidth = contentWidth + 2.0 * pad;
-        panelHeight = lines * lineHeight + pad;
-        // At least a pixel to spare on the far sides: anti-aliased edges reach into the next pixel.
-        const double margin = std::max(pad, 2.0);
-        const double overflow = std::max((panelWidth + margin) / static_cast<double>(m_width),
-                                         (panelHeight + margin) / static_cast<double>(m_height));
+        const double margin = std::max(layout.pad, 2.0);
+        const double overflow = std::max((layout.width + margin) / width, (layout.height + margin) / height);
         fits = overflow <= 1.0;
-        size *= fits ? 1.0 : 0.98 / overflow;
+        if (fits)
+        {
+            break;
+        }
+        layout = OverlayLayout(m_cr, title, labels, layout.size * 0.98 / overflow, width);
     }
-    if (!fits || size < kSmallestOverlayText)
+    if (fits && layout.size >= kSmallestOverlayText) // else no overlay rather than a cut or unreadable one
     {
-        cairo_set_font_size(m_cr, textSize);
-        return; // no room for legible text: no overlay rather than a cut or unreadable one
-    }
-    cairo_set_source_rgba(m_cr, 0.0, 0.0, 0.0, 0.55);
-    cairo_rectangle(m_cr, pad * 0.5, pad * 0.5, panelWidth, panelHeight);
-    cairo_fill(m_cr);
-
-    double y = pad * 0.5 + 0.5 * pad + size;
-    cairo_set_source_rgb(m_cr, 0.92, 0.92, 0.92);
-    if (!title.empty())
-    {
-        cairo_move_to(m_cr, pad * 1.5, y);
-        cairo_show_text(m_cr, title.c_str());
-        y += lineHeight;
-    }
-    for (std::size_t i = 0; i < legend.size(); ++i)
-    {
-        const double left = pad * 1.5 + x[i];
-        const double baseline = y + row[i] * lineHeight;
-        const Color& c = legend[i].color;
-        cairo_set_source_rgb(m_cr, c.r, c.g, c.b);
-        cairo_arc(m_cr, left + 0.5 * dot, baseline - 0.35 * size, 0.5 * dot, 0.0, kTurn);
+        const double pad = layout.pad;
+        cairo_set_source_rgba(m_cr, 0.0, 0.0, 0.0, 0.55);
+        cairo_rectangle(m_cr, pad * 0.5, pad * 0.5, layout.width, layout.height);
         cairo_fill(m_cr);
+        double y = pad + layout.size;
         cairo_set_source_rgb(m_cr, 0.92, 0.92, 0.92);
-        cairo_move_to(m_cr, left + dot + 0.4 * size, baseline);
-        cairo_show_text(m_cr, labels[i].c_str());
+        if (!title.empty())
+        {
+            cairo_move_to(m_cr, pad * 1.5, y);
+            cairo_show_text(m_cr, title.c_str());
+            y += layout.lineHeight;
+        }
+        for (std::size_t i = 0; i < legend.size(); ++i)
+        {
+            const double left = pad * 1.5 + layout.x[i];
+            const double baseline = y + layout.row[i] * layout.lineHeight;
+            const Color& c = legend[i].color;
+            cairo_set_source_rgb(m_cr, c.r, c.g, c.b);
+            cairo_arc(m_cr, left + 0.5 * layout.dot, baseline - 0.35 * layout.size, 0.5 * layout.dot, 0.0,
+                      kTurn);
+            cairo_fill(m_cr);
+            cairo_set_source_rgb(m_cr, 0.92, 0.92, 0.92);
+            cairo_move_to(m_cr, left + layout.dot + 0.4 * layout.size, baseline);
+            cairo_show_text(m_cr, labels[i].c_str());
+        }
+        cairo_new_path(m_cr);
     }
-    cairo_new_path(m_cr);
     cairo_set_font_size(m_cr, textSize);
 }
 
