@@ -495,7 +495,7 @@ int Run(const Options& options, SDL_Window* window, SDL_Renderer* renderer)
     double lag = 0.0;           // s of real time not yet simulated
     std::uint32_t mostAlive = 0;
     const Uint64 frequency = SDL_GetPerformanceFrequency();
-    const Uint64 start = SDL_GetPerformanceCounter();
+    Uint64 start = SDL_GetPerformanceCounter(); // of the run since the scene was (re)loaded
     Uint64 previous = start;
     Uint64 lastTitle = 0;
 
@@ -528,10 +528,22 @@ int Run(const Options& options, SDL_Window* window, SDL_Renderer* renderer)
                 case SDLK_f:
                     followCar = !followCar;
                     break;
-                case SDLK_r: // reload: the old Effects goes with its world, before the new scene loads
-                    session.reset();
-                    session = std::make_unique<Session>(options.scene);
-                    simulatedTime = 0.0f;
+                case SDLK_r: // reload; a file that no longer loads leaves the running scene as it is
+                    try
+                    {
+                        std::unique_ptr<Session> reloaded = std::make_unique<Session>(options.scene);
+                        session = std::move(reloaded); // the old Effects goes with its world
+                        simulatedTime = 0.0f;
+                        // The summary at exit counts from here, as the new Effects' statistics do.
+                        frame = -1; // the loop's increment makes it 0
+                        mostAlive = 0;
+                        start = SDL_GetPerformanceCounter();
+                        std::printf("reloaded %s\n", options.scene.c_str());
+                    }
+                    catch (const std::exception& error)
+                    {
+                        std::fprintf(stderr, "%s\nnot reloaded: the scene keeps running\n", error.what());
+                    }
                     break;
                 case SDLK_F12: // saved below, once this frame is drawn
                     screenshotRequested = true;

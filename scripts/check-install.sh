@@ -32,6 +32,25 @@ if cmake -S "$work/unknown" -B "$work/unknown-build" -DCMAKE_PREFIX_PATH="$prefi
   cat "$work/unknown.log" >&2
   exit 1
 fi
+# Without Cairo, an optional render component is not found and the rest configures; a required one fails
+# naming Cairo.
+mkdir -p "$work/nocairo/pc"
+printf 'cmake_minimum_required(VERSION 3.25)\nproject(o LANGUAGES CXX)\nfind_package(contactfx REQUIRED COMPONENTS scene OPTIONAL_COMPONENTS render)\nif(contactfx_render_FOUND OR NOT TARGET contactfx::scene)\n  message(FATAL_ERROR "render found without Cairo, or scene missing")\nendif()\n' \
+  > "$work/nocairo/CMakeLists.txt"
+if ! PKG_CONFIG_LIBDIR="$work/nocairo/pc" PKG_CONFIG_PATH="" \
+  cmake -S "$work/nocairo" -B "$work/nocairo-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/nocairo.log" 2>&1; then
+  echo "check-install: find_package(contactfx OPTIONAL_COMPONENTS render) failed without Cairo" >&2
+  cat "$work/nocairo.log" >&2
+  exit 1
+fi
+sed -i 's/OPTIONAL_COMPONENTS render/COMPONENTS render/' "$work/nocairo/CMakeLists.txt"
+if PKG_CONFIG_LIBDIR="$work/nocairo/pc" PKG_CONFIG_PATH="" \
+  cmake -S "$work/nocairo" -B "$work/nocairo-build2" -DCMAKE_PREFIX_PATH="$prefix" >"$work/nocairo2.log" 2>&1 ||
+  ! grep -q 'needs Cairo' "$work/nocairo2.log"; then
+  echo "check-install: find_package(contactfx COMPONENTS render) without Cairo did not fail naming Cairo" >&2
+  cat "$work/nocairo2.log" >&2
+  exit 1
+fi
 echo "find_package(contactfx): ok"
 
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
@@ -46,6 +65,10 @@ c++ -O1 "$work/consumer/consumer_components.cpp" -o "$work/consumer-components-p
 # shellcheck disable=SC2046
 c++ -O1 "$work/consumer/consumer_render.cpp" -o "$work/consumer-render-pc" $(pkg-config --cflags --libs contactfx-render)
 "$work/consumer-render-pc"
+# The static libraries are position independent: they link into a shared library (a game's plugin).
+# shellcheck disable=SC2046
+c++ -shared -fPIC "$work/consumer/consumer_components.cpp" -o "$work/libplugin.so" \
+  $(pkg-config --cflags --libs contactfx-render contactfx-scene)
 echo "pkg-config: ok"
 
 # The installed programs find the installed scenes wherever the prefix is moved, and name no path of

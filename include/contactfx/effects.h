@@ -1,7 +1,7 @@
 // contactfx: everything for one b2World behind one object.
 //
 //     b2World world(gravity);                    // the application's world
-//     cfx::Effects fx(world, cfx::EffectsDef{}); // default preset; installs its contact listener
+//     cfx::Effects fx(world, cfx::EffectsDef{cfx::DefaultPreset()}); // installs its contact listener
 //     fx.SetMaterial(tyreFixture, fx.FindMaterial("rubber"));
 //     for (;;) { world.Step(dt, 8, 3); fx.Step(dt); draw(fx.Particles()); }
 //
@@ -55,7 +55,9 @@ struct EffectsAccess;
 /// How to create an Effects object.
 struct EffectsDef
 {
-    EffectsConfig config;                                 ///< validated on creation; see presets.h
+    /// Validated on creation. Empty unless given: no materials, no rules, no effects (presets.h has
+    /// DefaultPreset() and TutorialPreset()).
+    EffectsConfig config;
     std::uint64_t seed = 1;                               ///< seeds every random choice
     b2ContactListener* contactListener = nullptr;         ///< the application's, may be null
     b2DestructionListener* destructionListener = nullptr; ///< the application's, may be null

@@ -101,7 +101,7 @@ public:
         {
             return RuleId{};
         }
-        return m_cells[a.index * m_count + b.index];
+        return m_cells[static_cast<std::size_t>(a.index) * static_cast<std::size_t>(m_count) + b.index];
     }
     int MaterialCount() const { return m_count; }
     /// Number of rules: one more than the largest rule id set.
