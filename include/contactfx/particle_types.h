@@ -55,7 +55,7 @@ struct ParticleTypeDef
 
     // Collision with the world's fixtures (never with other particles).
     bool collide = true;
-    float radius = 0.02f;                ///< m, (0, 10]
+    float radius = 0.02f;                ///< m, [0.001, 10]
     float restitution = 0.3f;            ///< [0, 1]: bounce
     float friction = 0.5f;               ///< [0, 1000]: Coulomb friction on each hit
     std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these

@@ -204,8 +204,11 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
         // Bit for bit, so that skipping the sweep of a resting particle gives exactly what it would have.
         fixedPoint = fromRest && SameBits(position, start) && SameBits(velocity, b2Vec2(0.0f, 0.0f));
         // Pushed out of one static shape it may be in another (a slab created over it, a slit between
-        // two boxes): still deep inside after the sweeps, it has no free place and is crushed.
-        if (startedDeep && StaticOverlapsDeeper(geometry, type.side, position))
+        // two boxes), or through a thin ground (a slab created over it on an edge or a chain pushes it out
+        // downwards): still deep inside after the sweeps, or across an edge, it has no free place and is
+        // crushed.
+        if (startedDeep && (StaticOverlapsDeeper(geometry, type.side, position) ||
+                            geometry.CrossesStaticSegment(start, position, type.side)))
         {
             crushed = true;
             return kUnknownClearance;

@@ -1,6 +1,7 @@
 #include "particles/particle_check.h"
 
 #include "child_edge.h"
+#include "particles/crossing.h"
 #include "spawn_point.h"
 #include "world_query.h"
 
@@ -13,29 +14,6 @@ namespace cfx::particles
 
 namespace
 {
-
-float Cross(b2Vec2 a, b2Vec2 b)
-{
-    return a.x * b.y - a.y * b.x;
-}
-
-// Whether the path p -> q crosses the edge v1 -> v2: two-sided from either side, one-sided only from the
-// front (right of v1 -> v2, Box2D's normal) to the back. Touching or ending on the line is not crossing.
-bool Crosses(b2Vec2 p, b2Vec2 q, b2Vec2 v1, b2Vec2 v2, bool oneSided)
-{
-    const b2Vec2 e = v2 - v1;
-    const float sideP = Cross(p - v1, e); // > 0: right of v1 -> v2, the front
-    const float sideQ = Cross(q - v1, e);
-    const bool opposite = oneSided ? (sideP > 0.0f && sideQ < 0.0f) : (sideP * sideQ < 0.0f);
-    if (!opposite)
-    {
-        return false;
-    }
-    const b2Vec2 d = q - p;
-    const float side1 = Cross(v1 - p, d);
-    const float side2 = Cross(v2 - p, d);
-    return side1 * side2 < 0.0f;
-}
 
 bool Accepts(const b2Fixture& fixture, const ParticleSide& side)
 {
@@ -50,7 +28,7 @@ bool PathCrosses(const b2Fixture& fixture, int child, b2Vec2 p, b2Vec2 q)
     const b2Transform& xf = fixture.GetBody()->GetTransform();
     b2EdgeShape edge;
     return detail::ChildEdge(*fixture.GetShape(), child, edge) &&
-           Crosses(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
+           PathCrossesEdge(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "particles/world_geometry.h"
 
 #include "child_edge.h"
+#include "particles/crossing.h"
 #include "spawn_point.h"
 
 #include <algorithm>
@@ -608,6 +609,22 @@ private:
     float m_segmentSq = std::numeric_limits<float>::infinity();
     float m_other = std::numeric_limits<float>::infinity(); ///< distance to the nearest circle or polygon
 };
+
+bool WorldGeometry::CrossesStaticSegment(b2Vec2 from, b2Vec2 to, const ParticleSide& side) const
+{
+    bool crosses = false;
+    m_staticGrid.Query(
+        PathBox(from, to, 0.0f),
+        [&](std::uint32_t index)
+        {
+            const Primitive& primitive = m_primitives[index];
+            crosses = crosses ||
+                      (primitive.kind == Kind::segment && (primitive.maskBits & side.categoryBits) != 0 &&
+                       (primitive.categoryBits & side.maskBits) != 0 &&
+                       PathCrossesEdge(from, to, primitive.a, primitive.b, primitive.oneSided));
+        });
+    return crosses;
+}
 
 bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
                                 float* clearance) const

@@ -141,6 +141,10 @@ public:
     /// something was touched.
     bool SweepStatic(const SweepInput& in, const ParticleSide& side, SweepResult& result,
                      float* clearance = nullptr) const;
+    /// Whether the straight path `from` -> `to` crosses a static edge or chain segment the particle's filter
+    /// accepts (particles::PathCrossesEdge: a one-sided segment only from its front). A disc pushed out of a
+    /// static shape it was deep inside of (one created over it) must not leave through a thin ground.
+    bool CrossesStaticSegment(b2Vec2 from, b2Vec2 to, const ParticleSide& side) const;
     /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
     /// is at `end` (world). The disc's path is followed in each body's own frame, in pieces short enough
     /// that a turning body's arc is followed too (at most kMaxTurn of turn a piece), so a spinning wheel

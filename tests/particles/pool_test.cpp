@@ -3,6 +3,7 @@
 #include "particle_system_access.h"
 #include "particles/particle_pool_fixture.h"
 
+#include <algorithm>
 #include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 #include <cstring>
@@ -294,6 +295,101 @@ TEST(ParticlePool, ParticlesInsideTwoStaticShapesAtOnceAreCrushed)
     {
         EXPECT_GT(scene.Position(i).x, 0.95f) << "the ten the slab does not cover";
         EXPECT_NEAR(scene.Position(i).y, 0.03f, 1e-3f);
+    }
+}
+
+// The same slab over particles resting on a thin ground: a two-sided edge, a chain (some of them on its
+// vertices) and a loop. The nearest way out of the slab is down, through the ground, and a trial saw them
+// pushed through it and falling for good (an edge has no inside to crush them in). A particle that starts
+// deep inside a static shape and would leave it across an edge or chain is crushed, at every step rate, and
+// the check counts no crossing (a path through a chain's vertex is a crossing too).
+TEST(ParticlePool, ParticlesUnderASlabOnAThinGroundAreCrushedNotPushedThrough)
+{
+    enum class Thin
+    {
+        edge,
+        chain,
+        loop
+    };
+    for (const float hz : {30.0f, 60.0f, 120.0f})
+    {
+        for (const Thin thin : {Thin::edge, Thin::chain, Thin::loop})
+        {
+            SCOPED_TRACE(testing::Message() << hz << " Hz, ground " << static_cast<int>(thin));
+            ParticleTypeDef grain = Ball(0.0f);
+            grain.radius = 0.02f;
+            grain.lifetime = 3600.0f;
+            ParticleSystemOptions options;
+            options.checkParticles = true;
+            Pool scene({grain}, {256, RecyclePolicy::oldest}, options);
+            b2BodyDef def;
+            b2Body* ground = scene.world->CreateBody(&def);
+            if (thin == Thin::edge)
+            {
+                b2EdgeShape edge;
+                edge.SetTwoSided(b2Vec2(-30.0f, 0.0f), b2Vec2(30.0f, 0.0f));
+                ground->CreateFixture(&edge, 0.0f);
+            }
+            else
+            {
+                // 0.5 m apart, right to left: the front (right of each segment) faces up; the loop closes
+                // under it counter-clockwise, its front outside.
+                std::vector<b2Vec2> vertices;
+                for (int i = 0; i <= 120; ++i)
+                {
+                    vertices.emplace_back(30.0f - 0.5f * static_cast<float>(i), 0.0f);
+                }
+                if (thin == Thin::loop)
+                {
+                    vertices.emplace_back(-30.0f, -1.0f);
+                    vertices.emplace_back(30.0f, -1.0f);
+                }
+                b2ChainShape chain;
+                if (thin == Thin::loop)
+                {
+                    chain.CreateLoop(vertices.data(), static_cast<int>(vertices.size()));
+                }
+                else
+                {
+                    chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()), b2Vec2(31.0f, 0.0f),
+                                      b2Vec2(-31.0f, 0.0f));
+                }
+                ground->CreateFixture(&chain, 0.0f);
+            }
+            for (int i = 0; i < 20; ++i)
+            {
+                scene.Add(b2Vec2(-1.0f + 0.1f * static_cast<float>(i), 0.02f)); // x = -1, -0.5, 0 on vertices
+            }
+            const float dt = 1.0f / hz;
+            auto step = [&]
+            {
+                scene.world->Step(dt, 8, 3);
+                scene.system->Step(dt, scene.world->GetGravity());
+            };
+            for (int i = 0; i < static_cast<int>(0.5f * hz); ++i)
+            {
+                step();
+            }
+            ASSERT_EQ(scene.system->Count(), 20u);
+            b2PolygonShape slab;
+            slab.SetAsBox(0.5f, 0.05f, b2Vec2(-0.55f, 0.05f),
+                          0.0f); // x from -1.05 to -0.05, bottom on the ground
+            ground->CreateFixture(&slab, 0.0f);
+            for (int i = 0; i < static_cast<int>(0.5f * hz); ++i)
+            {
+                step();
+            }
+            const ParticleCounters& counters = scene.system->Counters();
+            EXPECT_EQ(counters.crushed, 10u) << "the ten under the slab";
+            EXPECT_EQ(scene.system->Count(), 10u);
+            EXPECT_EQ(counters.crossings, 0u);
+            EXPECT_EQ(counters.stepsInside, 0u);
+            for (std::uint32_t i = 0; i < scene.system->Count(); ++i)
+            {
+                EXPECT_GT(scene.Position(i).x, -0.05f) << "the ten the slab does not cover";
+                EXPECT_NEAR(scene.Position(i).y, 0.02f, 2e-3f);
+            }
+        }
     }
 }
 

@@ -1,4 +1,5 @@
 // The disc sweeps and the grid, piece by piece.
+#include "particles/crossing.h"
 #include "particles/grid.h"
 #include "particles/sweep.h"
 #include "particles/world_geometry.h"
@@ -560,6 +561,25 @@ struct EveryShape
         return found;
     }
 };
+
+// A path through the vertex two segments of a chain share crosses the chain (a trial's particle pushed
+// down through a chain at a vertex was not counted: the test wanted the path strictly between the ends).
+TEST(PathCrossesEdge, ThroughAVertexAcrossNotAlongNorFromBehind)
+{
+    const b2Vec2 down0(0.0f, 0.02f), down1(0.0f, -0.02f);
+    // Segments right to left, front up (one-sided), meeting at (0, 0).
+    EXPECT_TRUE(particles::PathCrossesEdge(down0, down1, b2Vec2(0.5f, 0.0f), b2Vec2(0.0f, 0.0f), true));
+    EXPECT_TRUE(particles::PathCrossesEdge(down0, down1, b2Vec2(0.0f, 0.0f), b2Vec2(-0.5f, 0.0f), true));
+    EXPECT_TRUE(particles::PathCrossesEdge(down0, down1, b2Vec2(0.0f, 0.0f), b2Vec2(-0.5f, 0.0f), false));
+    // From behind a one-sided segment, along its line, beside it, or ending on it: not a crossing.
+    EXPECT_FALSE(particles::PathCrossesEdge(down1, down0, b2Vec2(0.5f, 0.0f), b2Vec2(0.0f, 0.0f), true));
+    EXPECT_FALSE(particles::PathCrossesEdge(b2Vec2(-0.2f, 0.0f), b2Vec2(0.2f, 0.0f), b2Vec2(0.5f, 0.0f),
+                                            b2Vec2(-0.5f, 0.0f), false));
+    EXPECT_FALSE(particles::PathCrossesEdge(b2Vec2(0.6f, 0.02f), b2Vec2(0.6f, -0.02f), b2Vec2(0.5f, 0.0f),
+                                            b2Vec2(0.0f, 0.0f), false));
+    EXPECT_FALSE(particles::PathCrossesEdge(down0, b2Vec2(0.0f, 0.0f), b2Vec2(0.5f, 0.0f),
+                                            b2Vec2(-0.5f, 0.0f), false));
+}
 
 } // namespace
 
