@@ -91,7 +91,7 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
         [&](std::uint32_t index)
         {
             const MovingShape& moving = m_movingShapes[index];
-            if ((moving.maskBits & side.categoryBits) == 0 || (moving.categoryBits & side.maskBits) == 0)
+            if (!side.Accepts(moving.categoryBits, moving.maskBits))
             {
                 return;
             }
@@ -177,39 +177,39 @@ bool WorldGeometry::MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side,
     // capsules, corners) from ever deciding differently than the measure would.
     const float clearlyShallow = r - depth + 1.0e-4f * r;
     bool deeper = false;
-    m_movingGrid.Query(
-        query,
-        [&](std::uint32_t index)
-        {
-            const MovingShape& moving = m_movingShapes[index];
-            if (deeper || (moving.maskBits & side.categoryBits) == 0 ||
-                (moving.categoryBits & side.maskBits) == 0 || !BoxesOverlap(query, m_movingBoxes[index]))
-            {
-                return;
-            }
-            const MovingBody& body = m_movingBodies[moving.body];
-            // A disc resting at `point` for the whole step that never comes within reach of the body's
-            // centre overlaps nothing of it at the end either.
-            if (!MayMeet(body, body.centerBefore, moving.reach, point, point, r))
-            {
-                return;
-            }
-            const SweepInput in{b2MulT(body.after, point), b2Vec2(0.0f, 0.0f), r};
-            if (moving.shape->GetType() == b2Shape::e_polygon)
-            {
-                const auto& polygon = static_cast<const b2PolygonShape&>(*moving.shape);
-                for (int i = 0; i < polygon.m_count; ++i)
-                {
-                    if (b2Dot(polygon.m_normals[i], in.p - polygon.m_vertices[i]) >= clearlyShallow)
-                    {
-                        return;
-                    }
-                }
-            }
-            Touch touch;
-            deeper =
-                SweepShape(in, *moving.shape, moving.child, touch) && touch.t == 0.0f && touch.depth > depth;
-        });
+    m_movingGrid.Query(query,
+                       [&](std::uint32_t index)
+                       {
+                           const MovingShape& moving = m_movingShapes[index];
+                           if (deeper || !side.Accepts(moving.categoryBits, moving.maskBits) ||
+                               !BoxesOverlap(query, m_movingBoxes[index]))
+                           {
+                               return;
+                           }
+                           const MovingBody& body = m_movingBodies[moving.body];
+                           // A disc resting at `point` for the whole step that never comes within reach of
+                           // the body's centre overlaps nothing of it at the end either.
+                           if (!MayMeet(body, body.centerBefore, moving.reach, point, point, r))
+                           {
+                               return;
+                           }
+                           const SweepInput in{b2MulT(body.after, point), b2Vec2(0.0f, 0.0f), r};
+                           if (moving.shape->GetType() == b2Shape::e_polygon)
+                           {
+                               const auto& polygon = static_cast<const b2PolygonShape&>(*moving.shape);
+                               for (int i = 0; i < polygon.m_count; ++i)
+                               {
+                                   if (b2Dot(polygon.m_normals[i], in.p - polygon.m_vertices[i]) >=
+                                       clearlyShallow)
+                                   {
+                                       return;
+                                   }
+                               }
+                           }
+                           Touch touch;
+                           deeper = SweepShape(in, *moving.shape, moving.child, touch) && touch.t == 0.0f &&
+                                    touch.depth > depth;
+                       });
     return deeper;
 }
 

@@ -18,8 +18,7 @@ namespace
 bool Accepts(const b2Fixture& fixture, const ParticleSide& side)
 {
     const b2Filter& filter = fixture.GetFilterData();
-    return !fixture.IsSensor() && (filter.maskBits & side.categoryBits) != 0 &&
-           (filter.categoryBits & side.maskBits) != 0;
+    return !fixture.IsSensor() && side.Accepts(filter.categoryBits, filter.maskBits);
 }
 
 // Whether the path p -> q crosses child `child` of an edge or chain fixture (false for other shapes).

@@ -618,10 +618,9 @@ bool WorldGeometry::CrossesStaticSegment(b2Vec2 from, b2Vec2 to, const ParticleS
         [&](std::uint32_t index)
         {
             const Primitive& primitive = m_primitives[index];
-            crosses = crosses ||
-                      (primitive.kind == Kind::segment && (primitive.maskBits & side.categoryBits) != 0 &&
-                       (primitive.categoryBits & side.maskBits) != 0 &&
-                       PathCrossesEdge(from, to, primitive.a, primitive.b, primitive.oneSided));
+            crosses = crosses || (primitive.kind == Kind::segment &&
+                                  side.Accepts(primitive.categoryBits, primitive.maskBits) &&
+                                  PathCrossesEdge(from, to, primitive.a, primitive.b, primitive.oneSided));
         });
     return crosses;
 }
@@ -643,8 +642,7 @@ bool WorldGeometry::SweepStatic(const SweepInput& in, const ParticleSide& side, 
     auto test = [&](std::uint32_t index)
     {
         const Primitive& primitive = m_primitives[index];
-        if ((primitive.maskBits & side.categoryBits) == 0 || (primitive.categoryBits & side.maskBits) == 0 ||
-            !nearest.Add(*this, primitive))
+        if (!side.Accepts(primitive.categoryBits, primitive.maskBits) || !nearest.Add(*this, primitive))
         {
             return;
         }

@@ -64,6 +64,12 @@ struct ParticleSide
     float restSpeed;
     std::uint16_t categoryBits;
     std::uint16_t maskBits;
+
+    /// Whether the particle collides with a fixture of this filter (Box2D's category and mask test).
+    bool Accepts(std::uint16_t fixtureCategoryBits, std::uint16_t fixtureMaskBits) const
+    {
+        return (fixtureMaskBits & categoryBits) != 0 && (fixtureCategoryBits & maskBits) != 0;
+    }
 };
 
 /// Where a particle ends up after meeting geometry.
