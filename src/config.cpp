@@ -95,25 +95,8 @@ private:
     std::vector<Diagnostic>& m_out;
 };
 
-// Names show in line-based output (validate, the run summary): a line break or a NUL in one would forge or
-// cut a line, and so would a C1 control (U+0085 NEXT LINE; U+009B starts a terminal's escape sequence).
-// C0 controls and DEL are single bytes; C1 controls are U+0080 .. U+009F, in UTF-8 0xC2 0x80 .. 0xC2 0x9F.
-bool HasControlCharacter(std::string_view name)
-{
-    for (std::size_t i = 0; i < name.size(); ++i)
-    {
-        const auto byte = static_cast<unsigned char>(name[i]);
-        const bool c1 = byte == 0xc2 && i + 1 < name.size() &&
-                        static_cast<unsigned char>(name[i + 1]) >= 0x80 &&
-                        static_cast<unsigned char>(name[i + 1]) <= 0x9f;
-        if (byte < 0x20 || byte == 0x7f || c1)
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
+// Names show in line-based output (validate, the run summary): a control character in one (a line break,
+// a NUL, U+0085 NEXT LINE) would forge or cut a line (detail::HasControlCharacter).
 const std::string kNoControlCharacters = "expected a name without control characters, found ";
 
 void CheckText(Checker& check, const std::string& path, const std::string& text, TextRule rule,
@@ -255,7 +238,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     std::vector<Diagnostic> out;
     Checker check(file, out);
 
-    if (HasControlCharacter(config.name))
+    if (detail::HasControlCharacter(config.name))
     {
         check.Fail("name", kNoControlCharacters + detail::QuotedText(config.name));
     }
@@ -272,7 +255,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         {
             check.Fail(at, "expected a non-empty name");
         }
-        else if (HasControlCharacter(config.materials[i]))
+        else if (detail::HasControlCharacter(config.materials[i]))
         {
             check.Fail(at, kNoControlCharacters + detail::QuotedText(config.materials[i]));
         }
@@ -296,7 +279,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         {
             check.Fail(at + ".name", "expected a non-empty name");
         }
-        else if (HasControlCharacter(type.name))
+        else if (detail::HasControlCharacter(type.name))
         {
             check.Fail(at + ".name", kNoControlCharacters + detail::QuotedText(type.name));
         }

@@ -16,14 +16,11 @@ std::string EscapedText(std::string_view text)
     for (std::size_t i = 0; i < text.size(); ++i)
     {
         const char c = text[i];
-        const auto byte = static_cast<unsigned char>(c);
-        // A C1 control (U+0080 .. U+009F, in UTF-8 0xC2 then 0x80 .. 0x9F) is as much a line break or an
-        // escape sequence to some terminals as a C0 one.
-        const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0u;
-        if (byte == 0xc2 && next >= 0x80 && next <= 0x9f)
+        const std::size_t control = ControlCharacterBytes(text, i);
+        if (control == 2) // a C1 control is as much a line break or an escape to some terminals as a C0 one
         {
             char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", next);
+            std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned char>(text[i + 1]));
             quoted += escape;
             ++i;
             continue;
@@ -46,10 +43,10 @@ std::string EscapedText(std::string_view text)
             quoted += "\\t";
             break;
         default:
-            if (byte < 0x20 || byte == 0x7f)
+            if (control == 1)
             {
                 char escape[8];
-                std::snprintf(escape, sizeof escape, "\\u%04x", byte);
+                std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned char>(c));
                 quoted += escape;
             }
             else
@@ -59,6 +56,29 @@ std::string EscapedText(std::string_view text)
         }
     }
     return quoted;
+}
+
+std::size_t ControlCharacterBytes(std::string_view text, std::size_t i)
+{
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte < 0x20 || byte == 0x7f)
+    {
+        return 1;
+    }
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0u;
+    return byte == 0xc2 && next >= 0x80 && next <= 0x9f ? 2 : 0;
+}
+
+bool HasControlCharacter(std::string_view text)
+{
+    for (std::size_t i = 0; i < text.size(); ++i)
+    {
+        if (ControlCharacterBytes(text, i) > 0)
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace cfx::detail

@@ -1,6 +1,7 @@
 // contactfx internal: a name from a file, quoted for a message.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -13,5 +14,12 @@ namespace cfx::detail
 std::string QuotedText(std::string_view text);
 /// The same without the surrounding quotes (a pair's name, "a+b").
 std::string EscapedText(std::string_view text);
+
+/// How many bytes the control character starting at text[i] takes: 1 for a C0 control (below 0x20) or
+/// DEL, 2 for a C1 control (U+0080 .. U+009F: UTF-8 0xC2 then 0x80 .. 0x9F; U+0085 is NEXT LINE, U+009B
+/// starts a terminal's escape sequence), 0 when none starts there.
+std::size_t ControlCharacterBytes(std::string_view text, std::size_t i);
+/// Whether `text` holds a control character (as ControlCharacterBytes counts them).
+bool HasControlCharacter(std::string_view text);
 
 } // namespace cfx::detail
