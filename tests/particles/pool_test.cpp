@@ -302,7 +302,9 @@ TEST(ParticlePool, ParticlesInsideTwoStaticShapesAtOnceAreCrushed)
 // vertices) and a loop. The nearest way out of the slab is down, through the ground, and a trial saw them
 // pushed through it and falling for good (an edge has no inside to crush them in). A particle that starts
 // deep inside a static shape and would leave it across an edge or chain is crushed, at every step rate, and
-// the check counts no crossing (a path through a chain's vertex is a crossing too).
+// the check counts no crossing (a path through a chain's vertex is a crossing too). The slab arrives as the
+// trial made it: a fixture created on the ground's body, a static body moved in with SetTransform, or one
+// waiting disabled in place and enabled.
 TEST(ParticlePool, ParticlesUnderASlabOnAThinGroundAreCrushedNotPushedThrough)
 {
     enum class Thin
@@ -311,11 +313,22 @@ TEST(ParticlePool, ParticlesUnderASlabOnAThinGroundAreCrushedNotPushedThrough)
         chain,
         loop
     };
+    enum class Arrival
+    {
+        created,
+        movedIn,
+        enabled
+    };
     for (const float hz : {30.0f, 60.0f, 120.0f})
     {
-        for (const Thin thin : {Thin::edge, Thin::chain, Thin::loop})
+        for (const auto& [thin, arrival] :
+             {std::pair{Thin::edge, Arrival::created}, std::pair{Thin::chain, Arrival::created},
+              std::pair{Thin::loop, Arrival::created}, std::pair{Thin::edge, Arrival::movedIn},
+              std::pair{Thin::chain, Arrival::movedIn}, std::pair{Thin::edge, Arrival::enabled},
+              std::pair{Thin::chain, Arrival::enabled}})
         {
-            SCOPED_TRACE(testing::Message() << hz << " Hz, ground " << static_cast<int>(thin));
+            SCOPED_TRACE(testing::Message() << hz << " Hz, ground " << static_cast<int>(thin) << ", slab "
+                                            << static_cast<int>(arrival));
             ParticleTypeDef grain = Ball(0.0f);
             grain.radius = 0.02f;
             grain.lifetime = 3600.0f;
@@ -374,7 +387,27 @@ TEST(ParticlePool, ParticlesUnderASlabOnAThinGroundAreCrushedNotPushedThrough)
             b2PolygonShape slab;
             slab.SetAsBox(0.5f, 0.05f, b2Vec2(-0.55f, 0.05f),
                           0.0f); // x from -1.05 to -0.05, bottom on the ground
-            ground->CreateFixture(&slab, 0.0f);
+            if (arrival == Arrival::created)
+            {
+                ground->CreateFixture(&slab, 0.0f);
+            }
+            else
+            {
+                b2BodyDef slabDef; // static
+                slabDef.position.Set(0.0f, arrival == Arrival::movedIn ? 50.0f : 0.0f);
+                slabDef.enabled = arrival != Arrival::enabled;
+                b2Body* slabBody = scene.world->CreateBody(&slabDef);
+                slabBody->CreateFixture(&slab, 0.0f);
+                step(); // the slab waits a step away, or disabled
+                if (arrival == Arrival::movedIn)
+                {
+                    slabBody->SetTransform(b2Vec2(0.0f, 0.0f), 0.0f);
+                }
+                else
+                {
+                    slabBody->SetEnabled(true);
+                }
+            }
             for (int i = 0; i < static_cast<int>(0.5f * hz); ++i)
             {
                 step();
