@@ -121,11 +121,18 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
         }
         else if (rule == TextRule::material && !config.FindMaterial(text).IsValid())
         {
-            check.Fail(path, "unknown material " + detail::QuotedText(text));
+            check.Fail(path, "unknown material " + detail::QuotedText(text) +
+                                 " (materials: " + detail::NameList(config.materials, "none") + ")");
         }
         else if (rule == TextRule::particleType && !config.FindParticleType(text).IsValid())
         {
-            check.Fail(path, "unknown particle type " + detail::QuotedText(text));
+            std::vector<std::string> types;
+            for (const ParticleTypeDef& type : config.particleTypes)
+            {
+                types.push_back(type.name);
+            }
+            check.Fail(path, "unknown particle type " + detail::QuotedText(text) +
+                                 " (particle types: " + detail::NameList(types, "none") + ")");
         }
         break;
     }

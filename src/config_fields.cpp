@@ -287,8 +287,18 @@ const std::array kRuleFields{
              .member = &R::burstPerSpeed,
              .unit = "per m/s",
              .range = {0.0f, 1.0e4f},
-             .doc = "an impact bursts this many particles per m/s above `impactThreshold`",
+             .doc =
+                 "an impact bursts this many particles per m/s above `impactThreshold` (or `burstThreshold`, "
+                 "when higher)",
              .step = 0.1f},
+    Field<R>{.name = "burstThreshold",
+             .member = &R::burstThreshold,
+             .unit = "m/s",
+             .range = {0.0f, 1.0e4f},
+             .doc =
+                 "approach speed an impact must pass to burst, when above `impactThreshold`: softer impacts "
+                 "make events and sound but no particles",
+             .step = 0.05f},
     Field<R>{.name = "burstMax",
              .member = &R::burstMax,
              .range = {0.0f, 1.0e5f},
@@ -412,12 +422,14 @@ const std::array kSoundFields{
               .doc = "the synthesizer's level: a voice's amplitude is gain * loudness before the soft "
                      "limiter",
               .step = 0.01f},
-    Field<SC>{.name = "particleHitGain",
-              .member = &SC::particleHitGain,
-              .unit = "1/(m/s)",
-              .range = {0.0f, 1000.0f},
-              .doc = "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count))",
-              .step = 0.005f},
+    Field<SC>{
+        .name = "particleHitGain",
+        .member = &SC::particleHitGain,
+        .unit = "1/(m/s)",
+        .range = {0.0f, 1000.0f},
+        .doc =
+            "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count * (1/60 s) / dt))",
+        .step = 0.005f},
     Field<SC>{.name = "particleHitLength",
               .member = &SC::particleHitLength,
               .unit = "s",

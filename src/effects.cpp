@@ -148,7 +148,9 @@ struct Effects::Internals
     }
 
     WorldClaim claim;
-    bool notifying = false;           // the event listener is being handed this step's events
+    // While the event listener is handed this step's events: the delivery's flag that the destructor sets
+    // (the listener may destroy the Effects); null otherwise.
+    bool* notifying = nullptr;
     b2ContactListener* worldListener; // the world's contact listener before Effects: put back if none is set
     FixtureMaterials materials;
     ContactTracker tracker;
@@ -171,6 +173,10 @@ Effects::Effects(b2World& world, const EffectsDef& def)
 
 Effects::~Effects()
 {
+    if (m_internals->notifying != nullptr)
+    {
+        *m_internals->notifying = true; // destroyed by the event listener: the delivery stops at once
+    }
     b2ContactListener* forward = m_internals->tracker.Forward();
     m_world.SetContactListener(forward != nullptr ? forward : m_internals->worldListener);
     m_world.SetDestructionListener(m_internals->destruction.forward);
@@ -235,7 +241,7 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 void Effects::Step(float dt)
 {
     // Checked before anything changes (the particle system checks again, for its own users).
-    if (m_internals->notifying)
+    if (m_internals->notifying != nullptr)
     {
         throw InputError("<api>", "listener",
                          "Effects::Step called from the event listener: it is handing on the events of the "
@@ -291,7 +297,7 @@ void Effects::ShiftOrigin(b2Vec2 newOrigin)
 
 void Effects::EndScrapes()
 {
-    if (m_internals->notifying)
+    if (m_internals->notifying != nullptr)
     {
         // Called by the event listener: the scrape ends follow the events being delivered, which the
         // delivery loop then hands on too (each event once).
@@ -308,12 +314,22 @@ void Effects::NotifyListener()
     {
         return;
     }
-    m_internals->notifying = true;
-    struct Done
+    // The listener may destroy this Effects (a level torn down on an event): the destructor sets
+    // `destroyed`, and the delivery then returns without touching what was freed.
+    bool destroyed = false;
+    struct Delivery
     {
-        bool& notifying;
-        ~Done() { notifying = false; }
-    } done{m_internals->notifying};
+        bool& destroyed;
+        bool*& notifying;
+        ~Delivery()
+        {
+            if (!destroyed)
+            {
+                notifying = nullptr;
+            }
+        }
+    } delivery{destroyed, m_internals->notifying};
+    m_internals->notifying = &destroyed;
     // By index, each event copied: the listener may end the scrapes (EndScrapes), which appends to the
     // events and may move them; and it may replace or remove itself (SetEventListener), which takes effect
     // from the next event.
@@ -321,6 +337,10 @@ void Effects::NotifyListener()
     {
         const EffectEvent event = m_internals->events.Events()[i];
         m_eventListener->OnEffectEvent(event);
+        if (destroyed)
+        {
+            return;
+        }
     }
 }
 

@@ -115,6 +115,8 @@ struct ParticleSystem::Impl
     std::vector<float> clearance;
     // Only with checkParticles: each particle's position at the start of the step.
     std::vector<float> startX, startY;
+    // Only with checkParticles: where a moving body's push took each particle from (PoolArrays::viaX).
+    std::vector<float> viaX, viaY;
     // Cold: bodies of body-backed particles (empty when no type is body-backed). bodySet holds the
     // bodies the system still owns: a body the application destroyed (ForgetBody) leaves it at once,
     // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
@@ -167,6 +169,8 @@ struct ParticleSystem::Impl
                                      anyBodyBacked ? body.data() : nullptr,
                                      startX.empty() ? nullptr : startX.data(),
                                      startX.empty() ? nullptr : startY.data(),
+                                     viaX.empty() ? nullptr : viaX.data(),
+                                     viaX.empty() ? nullptr : viaY.data(),
                                      capacity,
                                      head};
     }
@@ -404,6 +408,8 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     {
         impl.startX.resize(m_capacity);
         impl.startY.resize(m_capacity);
+        impl.viaX.resize(m_capacity);
+        impl.viaY.resize(m_capacity);
     }
     if (impl.anyBodyBacked)
     {
@@ -711,6 +717,8 @@ void ParticleSystem::ShiftOrigin(b2Vec2 newOrigin)
     {
         impl.startX[slot] -= newOrigin.x;
         impl.startY[slot] -= newOrigin.y;
+        impl.viaX[slot] -= newOrigin.x;
+        impl.viaY[slot] -= newOrigin.y;
     }
     for (ParticleHitGroup& group : impl.hitGroups)
     {
@@ -781,7 +789,8 @@ std::size_t ParticleSystem::MemoryBytes() const
     const Impl& impl = *m_impl;
     std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
     bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
-    bytes += (impl.startX.capacity() + impl.startY.capacity()) * sizeof(float);
+    bytes += (impl.startX.capacity() + impl.startY.capacity() + impl.viaX.capacity() + impl.viaY.capacity()) *
+             sizeof(float);
     bytes += impl.hitSums.capacity() * sizeof(HitSums) + impl.hitOrder.capacity() * sizeof(std::uint32_t) +
              impl.hitGroups.capacity() * sizeof(ParticleHitGroup);
     return bytes + impl.geometry.Bytes();

@@ -81,4 +81,19 @@ bool HasControlCharacter(std::string_view text)
     return false;
 }
 
+std::string NameList(const std::vector<std::string>& names, std::string_view none)
+{
+    constexpr std::size_t kListed = 20;
+    std::string list;
+    for (std::size_t i = 0; i < names.size() && i < kListed; ++i)
+    {
+        list += (list.empty() ? "" : ", ") + EscapedText(names[i]);
+    }
+    if (names.size() > kListed)
+    {
+        list += " and " + std::to_string(names.size() - kListed) + " more";
+    }
+    return list.empty() ? std::string(none) : list;
+}
+
 } // namespace cfx::detail

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace cfx::detail
 {
@@ -14,6 +15,10 @@ namespace cfx::detail
 std::string QuotedText(std::string_view text);
 /// The same without the surrounding quotes (a pair's name, "a+b").
 std::string EscapedText(std::string_view text);
+
+/// What a list holds, for a message naming what there is instead of an unknown name: "a, b, c" (each
+/// escaped), the first 20 and then "and N more"; `none` when the list is empty.
+std::string NameList(const std::vector<std::string>& names, std::string_view none);
 
 /// How many bytes the control character starting at text[i] takes: 1 for a C0 control (below 0x20) or
 /// DEL, 2 for a C1 control (U+0080 .. U+009F: UTF-8 0xC2 then 0x80 .. 0x9F; U+0085 is NEXT LINE, U+009B

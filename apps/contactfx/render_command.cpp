@@ -18,12 +18,14 @@
 #include "contactfx/render/frame_output.h"
 #include "outputs.h"
 #include "progress.h"
+#include "quoted_text.h"
 #include "scenario.h"
 #include "sound_output.h"
 
 #include <box2d/b2_body.h>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -44,6 +46,7 @@ struct RenderOptions
     int height = 720;           ///< px
     double fps = 30.0;
     std::string follow = "car";           ///< body the camera follows; empty or absent: the whole world
+    bool followGiven = false;             ///< --follow was on the command line (a name it lacks is a typo)
     double view = 14.0;                   ///< m across the picture when following
     bool debug = false;                   ///< --debug: every debug layer
     std::vector<std::string> debugLayers; ///< --debug-layers: some of them (kDebugLayerNames)
@@ -234,6 +237,11 @@ int Render(RenderOptions options)
         {
             followed = body->body;
         }
+        else if (options.followGiven)
+        {
+            std::cerr << "contactfx: warning: --follow: the scene has no body named "
+                      << detail::QuotedText(options.follow) << ": the whole world shows\n";
+        }
     }
     Camera camera =
         MakeCamera(options.width, options.height, static_cast<float>(options.view), b2Vec2(0.0f, 0.0f));
@@ -375,8 +383,11 @@ void RegisterRenderCommand(CLI::App& app, int& result)
         ->check(DecimalNumber())
         ->capture_default_str();
     render
-        ->add_option("--follow", options->follow,
-                     "Body (by name) the camera follows; when the scene has none, the whole world shows")
+        ->add_option(
+            "--follow", options->follow,
+            "Body (by name) the camera follows; when the scene has none, the whole world shows (with "
+            "a warning when the name was given)")
+        ->each([options](const std::string&) { options->followGiven = true; })
         ->capture_default_str();
     render->add_option("--view", options->view, "Metres shown across the picture when following a body")
         ->check(DecimalNumber())

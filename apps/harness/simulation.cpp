@@ -183,6 +183,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     }
     root["rules"] = rules;
     root["live_max"] = stats.liveMax;
+    root["recycled"] = stats.recycled;
     root["spawned_inside_solid"] = stats.spawnedInsideSolid;
     root["crushed"] = stats.crushed;
     root["particle_steps_inside"] = stats.particleStepsInside;

@@ -17,14 +17,16 @@ Session::~Session()
 void Session::Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config)
 {
     SimulationDef def = SceneSimulationDef(entry, m_scenesDir);
-    if (config)
+    const std::optional<EffectsConfig>& chosen = config ? config : m_chosenConfig;
+    if (chosen)
     {
-        def.config = *config;
+        def.config = *chosen;
     }
     auto simulation = std::make_unique<Simulation>(def); // throws before anything here changes
     m_drag.Release();
     m_drag.Forget();
     m_simulation = std::move(simulation);
+    m_chosenConfig = chosen;
     m_entry = &entry;
     m_events.Clear();
     ++m_generation;
@@ -85,6 +87,7 @@ void Session::Launch()
 void Session::ApplyConfig(const EffectsConfig& config)
 {
     m_simulation->ReplaceEffects(config);
+    m_chosenConfig = config;
     m_events.Clear(); // their rules were the old configuration's
 }
 

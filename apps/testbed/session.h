@@ -27,18 +27,22 @@ public:
     explicit Session(std::filesystem::path scenesDir) : m_scenesDir(std::move(scenesDir)) {}
     ~Session();
 
-    /// Opens a registered scene with `config`, or with the scene's own effects when none is given.
-    /// Throws InputError and keeps the current scene on bad input.
+    /// Opens a registered scene with `config`; when none is given, with the configuration chosen before
+    /// (given to an earlier Open, as --effects does, or put in force by ApplyConfig), else with the scene's
+    /// own effects. Throws InputError and keeps the current scene (and the chosen configuration) on bad
+    /// input.
     void Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config = std::nullopt);
     /// Opens the current scene again from its file, with the effects configuration in force.
     void Restart();
     /// Opens the registered scene `step` places after the current one in Scenes() order (negative:
-    /// before), wrapping around, with its own effects. Throws InputError and keeps the scene on bad input.
+    /// before), wrapping around, with the configuration chosen (see Open), else its own effects. Throws
+    /// InputError and keeps the scene on bad input.
     void OpenNeighbour(int step);
     /// Launches a steel ball (material "steel" when the effects have it) from the top left of the view
     /// towards the middle of its bottom edge, fast enough to strike sparks.
     void Launch();
-    /// Replaces the effects configuration, keeping the world (Simulation::ReplaceEffects).
+    /// Replaces the effects configuration, keeping the world (Simulation::ReplaceEffects); scenes opened
+    /// later use it too.
     void ApplyConfig(const EffectsConfig& config);
 
     /// One simulation step unless paused; when paused, one step if a single step was asked for.
@@ -78,6 +82,8 @@ private:
     std::filesystem::path m_scenesDir;
     const SceneEntry* m_entry = nullptr;
     std::unique_ptr<Simulation> m_simulation;
+    /// The configuration the user chose (--effects, an applied edit): every scene opened uses it.
+    std::optional<EffectsConfig> m_chosenConfig;
     cfx::Camera m_camera;
     MouseDrag m_drag;
     EventLog m_events;

@@ -99,6 +99,9 @@ public:
     void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
 
     /// Runs after each b2World::Step with the same dt (s, > 0): emission, spawning, particle motion.
+    /// With substeps (several world steps a frame), call it after each of them: called once after several,
+    /// it sees only the contacts of the last, and the emission of the others is lost (four substeps of
+    /// 1/240 s and one Step(1/60): 43 % fewer sparks in a trial). Not detected.
     /// Called again without a world step in between (a paused world), it moves the particles but emits
     /// nothing and leaves the scrapes as they are: the contacts are as the last world step left them.
     /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the

@@ -94,7 +94,9 @@ struct EffectEvent
 /// call. It may read the world but must not step it or destroy bodies, nor step the Effects (that throws
 /// InputError, field "listener"). It may call Effects::EndScrapes: the scrape ends then follow the step's
 /// events, in Events() too, and it hears them after the rest, each event once. It may replace or remove
-/// itself (Effects::SetEventListener): the new listener, or none, has the events after the current one.
+/// itself (Effects::SetEventListener): the new listener, or none, has the events after the current one. It
+/// may destroy the Effects (a level torn down on an event): it then hears no more events of the step, and
+/// Effects::Step (or EndScrapes) returns without touching the destroyed Effects.
 class EffectEventListener
 {
 public:

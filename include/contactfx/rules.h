@@ -75,8 +75,13 @@ struct RuleDef
     float scrapeEndDelay = 0.1f;
     /// Approach speed along the normal at a new touch (events.h) that makes an impact event, m/s, [0, 1e4].
     float impactThreshold = 2.0f;
-    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold, [0, 1e4].
+    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold (or above
+    /// burstThreshold when that is higher), [0, 1e4].
     float burstPerSpeed = 0.0f;
+    /// Approach speed (m/s, [0, 1e4]) an impact must pass to burst, when it is above impactThreshold: soft
+    /// impacts then make events (and sound) without particles. At or below impactThreshold (0 by default)
+    /// it changes nothing: a burst comes with an impact event.
+    float burstThreshold = 0.0f;
     /// Most particles one impact bursts, [0, 1e5].
     float burstMax = 50.0f;
 

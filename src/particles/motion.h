@@ -47,6 +47,11 @@ struct PoolArrays
     /// checking. Moved with its particle like the other arrays.
     float* startX;
     float* startY;
+    /// Where a moving body's push took each particle from in the last step (its position after the static
+    /// sweeps), its start when nothing pushed it: the path was start -> via -> end, not a straight line.
+    /// Null unless checking, with startX.
+    float* viaX;
+    float* viaY;
     std::uint32_t capacity;
     std::uint32_t head;
 

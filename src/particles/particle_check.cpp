@@ -45,9 +45,13 @@ void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep
         }
         const b2Vec2 start(pool.startX[slot], pool.startY[slot]);
         const b2Vec2 end(pool.positionX[slot], pool.positionY[slot]);
+        // The path the step took: from the start to where a moving body's push took it from (the start
+        // itself when nothing pushed it), then to the end. Its chord can cut an edge the particle went
+        // around (flown past the edge's end, then pushed down beyond it).
+        const b2Vec2 via(pool.viaX[slot], pool.viaY[slot]);
         b2AABB box;
-        box.lowerBound = b2Min(start, end);
-        box.upperBound = b2Max(start, end);
+        box.lowerBound = b2Min(b2Min(start, via), end);
+        box.upperBound = b2Max(b2Max(start, via), end);
         bool inside = false;
         bool crossed = false;
         // Each child once: a fixture of one child (polygon, circle, edge) is met once, a chain once per
@@ -60,7 +64,8 @@ void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep
                                   {
                                       inside = inside || fixture->TestPoint(end);
                                       crossed = crossed || (fixture->GetBody()->GetType() == b2_staticBody &&
-                                                            PathCrosses(*fixture, child, start, end));
+                                                            (PathCrosses(*fixture, child, start, via) ||
+                                                             PathCrosses(*fixture, child, via, end)));
                                   }
                                   return !(inside && crossed);
                               });

@@ -219,7 +219,9 @@ ProgramResult RunProgram(const std::filesystem::path& program, const std::vector
     {
         command += " " + ShellQuote(argument);
     }
-    command += " 2>&1";
+    // Its input is empty: ffmpeg reads keys from standard input, and would take the bytes our caller's
+    // script feeds the commands after ours.
+    command += " </dev/null 2>&1";
     ProgramResult result;
     std::FILE* pipe = ::popen(command.c_str(), "r");
     if (pipe == nullptr)

@@ -19,22 +19,6 @@ namespace cfx
 namespace
 {
 
-// The first kListed names (a config of 20,000 materials made a message of 900 kB per fixture).
-std::string KnownMaterials(const EffectsConfig& config)
-{
-    constexpr std::size_t kListed = 20;
-    std::string known;
-    for (std::size_t i = 0; i < config.materials.size() && i < kListed; ++i)
-    {
-        known += (known.empty() ? "" : ", ") + config.materials[i];
-    }
-    if (config.materials.size() > kListed)
-    {
-        known += " and " + std::to_string(config.materials.size() - kListed) + " more";
-    }
-    return known.empty() ? "no materials" : known;
-}
-
 /// A property that is not a string, as the file has it: "int property 4", "vec2 property".
 std::string DescribeNonString(const CustomProperty& property)
 {
@@ -94,7 +78,8 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
             {
                 problems.push_back({std::string(file), path + ".string",
                                     "unknown material " + detail::QuotedText(*name) +
-                                        " (the effects config has: " + KnownMaterials(config) + ")"});
+                                        " (the effects config has: " +
+                                        detail::NameList(config.materials, "no materials") + ")"});
                 continue;
             }
             materials[f] = material;

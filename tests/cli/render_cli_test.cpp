@@ -77,6 +77,24 @@ TEST(CliRender, ARegisteredSceneRendersLikeAFile)
     EXPECT_EQ(size->second, 32u);
 }
 
+// A trial's `--follow blok` (for "block") rendered the whole world without a word. A name given on the
+// command line that the scene lacks is warned of (the picture is still made, as the docs say); the default
+// "car" in a scene without a car is not.
+TEST(CliRender, AFollowedNameTheSceneLacksIsWarnedOf)
+{
+    const std::filesystem::path dir = ScratchDir("render_follow");
+    const std::filesystem::path out = dir / "x.png";
+    const CliResult typo =
+        RunCli("render --scene grinder --time 0.1 --follow blok" + kTiny + "--out " + out.string());
+    ASSERT_EQ(typo.exitCode, 0) << typo.output;
+    EXPECT_NE(typo.output.find("warning: --follow: the scene has no body named \"blok\""), std::string::npos)
+        << typo.output;
+    EXPECT_TRUE(PngSize(Bytes(out)).has_value());
+    const CliResult plain = RunCli("render --scene grinder --time 0.1" + kTiny + "--out " + out.string());
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+}
+
 TEST(CliRender, SameFlagsGiveTheSameBytesAndTheOneFrameIsTheSequencesFrame)
 {
     const std::filesystem::path dir = ScratchDir("render_same");

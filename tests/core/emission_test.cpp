@@ -145,6 +145,61 @@ std::uint64_t LandSlidingBox(float hz, float maxRate)
     return scene.Spawned("sparks");
 }
 
+// A trial's artist wanted bursts on hard impacts only: raising impactThreshold also removed the softer
+// impacts' events and sound. burstThreshold above impactThreshold keeps them, without particles; at or
+// below it, it changes nothing.
+TEST(Emission, ABurstThresholdKeepsSoftImpactsAsEventsWithoutParticles)
+{
+    struct Drop
+    {
+        float approach = 0.0f; ///< the impact event's, m/s (0: none)
+        std::uint64_t sparks = 0;
+    };
+    const auto drop = [](float speed, float burstThreshold)
+    {
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.56f), 0.5f, 0.5f, 0.5f);
+        box->SetLinearVelocity(b2Vec2(0.0f, -speed));
+        EffectsConfig config = DefaultPreset();
+        config.budget.capacity = 100000;
+        RuleDef& rule = config.rules[0]; // steel on concrete
+        rule.ratePerIntensity = 0.0f;    // bursts only
+        rule.impactThreshold = 2.0f;
+        rule.burstPerSpeed = 10.0f;
+        rule.burstMax = 1000.0f;
+        rule.burstThreshold = burstThreshold;
+        Effects& fx = scene.Attach(std::move(config));
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        Drop result;
+        for (int i = 0; i < 30; ++i)
+        {
+            scene.Step();
+            for (const EffectEvent& event : fx.Events())
+            {
+                result.approach =
+                    event.type == EffectEventType::impact ? event.approachSpeed : result.approach;
+            }
+        }
+        result.sparks = scene.Spawned("sparks");
+        return result;
+    };
+    for (const float burstThreshold : {0.0f, 1.0f, 2.0f, 6.0f})
+    {
+        SCOPED_TRACE(burstThreshold);
+        const Drop soft = drop(4.0f, burstThreshold);
+        const Drop hard = drop(9.0f, burstThreshold);
+        ASSERT_GT(soft.approach, 2.0f) << "an impact event either way";
+        ASSERT_LT(soft.approach, 6.0f);
+        ASSERT_GT(hard.approach, 6.0f);
+        const float from = std::max(2.0f, burstThreshold);
+        EXPECT_EQ(soft.sparks,
+                  soft.approach > from ? static_cast<std::uint64_t>(10.0f * (soft.approach - from)) : 0u);
+        EXPECT_EQ(hard.sparks, static_cast<std::uint64_t>(10.0f * (hard.approach - from)));
+    }
+}
+
 TEST(Emission, ALandingsPressureSpikeIsNotCutByTheCapAtAnyStepRate)
 {
     // 1,000 a second saves 33 particles, more than this landing's spike asks (about 30).

@@ -356,6 +356,45 @@ TEST(Events, TheListenerMayReplaceOrRemoveItself)
     }
 }
 
+// A game tears a level down on an event: a trial's listener destroyed the Effects on a scrape's beginning,
+// and the delivery loop went on reading the freed object (a use after free under AddressSanitizer). The
+// listener hears no more events of the step, and Step returns without touching the destroyed Effects.
+TEST(Events, TheListenerMayDestroyTheEffects)
+{
+    struct Destroying final : public EffectEventListener
+    {
+        void OnEffectEvent(const EffectEvent&) override
+        {
+            ++heard;
+            owner->reset();
+        }
+        std::unique_ptr<Effects>* owner = nullptr;
+        int heard = 0;
+    } destroying;
+    ScrapeScene scene;
+    b2Body* second = scene.CreateBox(b2Vec2(4.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    scene.effects->SetMaterial(second, scene.Material("steel"));
+    destroying.owner = &scene.effects;
+    scene.effects->SetEventListener(&destroying);
+    int steps = 0;
+    while (scene.effects != nullptr && steps < 60)
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3);
+        for (b2Body* box : {scene.box, second})
+        {
+            box->SetLinearVelocity(b2Vec2(4.0f, box->GetLinearVelocity().y));
+        }
+        scene.effects->Step(1.0f / 60.0f); // both boxes begin scraping in the same step: two events
+        ++steps;
+    }
+    EXPECT_EQ(scene.effects, nullptr);
+    EXPECT_EQ(destroying.heard, 1);
+    for (int i = 0; i < 10; ++i)
+    {
+        scene.world->Step(1.0f / 60.0f, 8, 3); // the world's listeners are its own again
+    }
+}
+
 // Stepping the effects from their own listener would hand on a step's events while the next one replaces
 // them: refused.
 TEST(Events, TheListenerMayNotStepTheEffects)

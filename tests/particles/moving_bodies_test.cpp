@@ -320,6 +320,44 @@ TEST(MovingBodiesSliding, SteelSlidingOnConcreteCrushesNoSparkItDoesNotRunOver)
     }
 }
 
+// The particle check tested the chord from a step's start to its end: a particle flown past the end of a
+// two-sided edge ground and then pushed down beyond that end by a body coming down (a box squeezed off a
+// bin's ground in a trial) went around the end, but its chord cut the edge and was counted as a crossing.
+// The check now follows the step's two legs: start to where the push took it from, then to the end.
+TEST(MovingBodiesCheck, AParticlePushedDownPastAnEdgesEndIsNoCrossing)
+{
+    ParticleSystemOptions options;
+    options.checkParticles = true;
+    Pool scene({Ball()}, ParticleBudget{8, RecyclePolicy::oldest}, options);
+    b2BodyDef groundDef;
+    b2Body* ground = scene.world->CreateBody(&groundDef);
+    b2EdgeShape edge;
+    edge.SetTwoSided(b2Vec2(-1.0f, 0.0f), b2Vec2(1.0f, 0.0f));
+    ground->CreateFixture(&edge, 0.0f);
+    // Bottom at y = 0.2, over the edge's left end (-1) from x = -1.6 to -0.9.
+    b2Body* press = scene.CreateBox(b2Vec2(-1.25f, 0.45f), 0.35f, 0.25f, 0.5f, b2_kinematicBody);
+    // Step 1: the ball (r = 5 cm) flies left at 24 m/s, 7 cm above the ground, to x = -0.8.
+    scene.Add(b2Vec2(-0.4f, 0.07f), b2Vec2(-24.0f, 0.0f));
+    scene.StepAll();
+    const b2Vec2 start = scene.Position(0);
+    ASSERT_NEAR(start.x, -0.8f, 1e-3f);
+    ASSERT_GT(start.y, 0.06f);
+    // Step 2: it flies on past the end to x = -1.2 while the press comes down 0.23 m to a bottom at
+    // y = -0.03 and meets it at x = -0.94: it ends under the press, beyond the end, below the ground's line.
+    press->SetLinearVelocity(b2Vec2(0.0f, -13.8f));
+    scene.StepAll();
+    ASSERT_EQ(scene.system->Count(), 1u);
+    const b2Vec2 end = scene.Position(0);
+    EXPECT_LT(end.x, -1.1f); // beyond the end by more than the radius: it went around it
+    EXPECT_LT(end.y, -0.06f);
+    // Its chord crosses y = 0 left of the start but right of the end (-1): what the old check counted.
+    const float chordAtZero = start.x + (end.x - start.x) * start.y / (start.y - end.y);
+    EXPECT_GT(chordAtZero, -1.0f);
+    EXPECT_EQ(scene.system->Counters().crossings, 0u);
+    EXPECT_EQ(scene.system->Counters().stepsInside, 0u);
+    EXPECT_EQ(scene.system->Counters().crushed, 0u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Particles, MovingBodies,
                          ::testing::Combine(::testing::Values(Ground::twoSidedEdge, Ground::chain,
                                                               Ground::thickBox, Ground::splitBoxes),

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace cfx::test
 {
@@ -60,6 +61,32 @@ TEST(Output, FindsProgramsOnThePathOnly)
     ::setenv("PATH", empty.c_str(), 1);
     EXPECT_TRUE(render::FindProgram("sh").empty());
     ::setenv("PATH", path.c_str(), 1);
+}
+
+TEST(Output, ProgramsReadNothingOfOurStandardInput)
+{
+    // ffmpeg reads keys from its standard input: given ours, it took the bytes a script fed the commands
+    // after ours (`while read line; do $line; done`).
+    int feed[2];
+    ASSERT_EQ(::pipe(feed), 0);
+    const int savedInput = ::dup(STDIN_FILENO);
+    ASSERT_GE(savedInput, 0);
+    ASSERT_EQ(::dup2(feed[0], STDIN_FILENO), STDIN_FILENO);
+    ::close(feed[0]);
+    const std::string ours = "the next command\n";
+    ASSERT_EQ(::write(feed[1], ours.data(), ours.size()), static_cast<ssize_t>(ours.size()));
+    ::close(feed[1]);
+
+    const render::ProgramResult cat = render::RunProgram(render::FindProgram("cat"), {});
+    std::string left(64, '\0');
+    const ssize_t n = ::read(STDIN_FILENO, left.data(), left.size());
+    ::dup2(savedInput, STDIN_FILENO);
+    ::close(savedInput);
+
+    EXPECT_EQ(cat.status, 0);
+    EXPECT_EQ(cat.output, "");
+    ASSERT_GE(n, 0);
+    EXPECT_EQ(left.substr(0, static_cast<std::size_t>(n)), ours);
 }
 
 namespace

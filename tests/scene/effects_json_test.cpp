@@ -361,7 +361,9 @@ TEST(EffectsJson, NamesWithControlCharactersAreRefusedAndQuotedEscaped)
         "materials[2]: expected a name without control characters, found \"gl\\u0085ass\"",
         "materials[3]: expected a name without control characters, found \"gl\\u009bass\"",
         "particleTypes[0].name: expected a name without control characters, found \"p\\tq\"",
-        "rules[0].materialB: unknown material \"zz\\nfake.json: ok\""};
+        "rules[0].materialB: unknown material \"zz\\nfake.json: ok\" (materials: a\\nb: ok, st\\u0000eel, "
+        "gl\\u0085ass, gl\\u009bass, gl\xC2\xA0"
+        "ass)"};
     EXPECT_EQ(problems, expected);
 }
 
@@ -373,10 +375,12 @@ TEST(EffectsJson, ASoundRuleForAPairWithoutARuleIsAnError)
         "rules": [{"materialA": "steel", "materialB": "stone", "particleType": "sparks"}], "sound": {"rules": [
             {"materialA": "stone", "materialB": "steel"}, {"materialA": "steel", "materialB": "steel"},
             {"materialA": "steel", "materialB": "glass"}]}})";
-    EXPECT_EQ(ProblemsOf(config),
-              (std::vector<std::string>{"sound.rules[1]: no rule for the pair steel+steel in \"rules\": this "
-                                        "sound rule would never apply",
-                                        "sound.rules[2].materialB: unknown material \"glass\""}));
+    EXPECT_EQ(
+        ProblemsOf(config),
+        (std::vector<std::string>{"sound.rules[1]: no rule for the pair steel+steel in \"rules\": this "
+                                  "sound rule would never apply",
+                                  "sound.rules[2].materialB: unknown material \"glass\" (materials: steel, "
+                                  "stone)"}));
 }
 
 // nlohmann keeps the last of a repeated key: the first would silently do nothing.

@@ -183,6 +183,42 @@ TEST(TestbedSession, ZoomKeepsThePointUnderTheCursorAndResizeKeepsTheHeightShown
     EXPECT_EQ(session.Camera().center, fresh.Camera().center);
 }
 
+// A trial's artist opened the testbed with --effects, edited a threshold and went to the next scene: it
+// opened with its own effects, the file and the edit silently gone. The configuration chosen (given to Open,
+// or applied) goes with the user to every scene; a scene it does not fit is refused and the old one stays.
+TEST(TestbedSession, TheChosenEffectsGoWithTheUserToOtherScenes)
+{
+    Session session(kScenesDir);
+    EffectsConfig given = DefaultPreset();
+    given.rules[0].threshold = 0.85f;
+    session.Open(*FindScene("skidpad"), given);
+    session.OpenNeighbour(1);
+    EXPECT_NE(session.Entry().name, "skidpad");
+    EXPECT_EQ(session.Sim().GetEffects().Config(), given);
+
+    EffectsConfig edited = given;
+    edited.rules[0].threshold = 5.0f;
+    session.ApplyConfig(edited);
+    session.OpenNeighbour(-1);
+    EXPECT_EQ(session.Entry().name, "skidpad");
+    EXPECT_EQ(session.Sim().GetEffects().Config(), edited);
+    session.Open(*FindScene("grinder"));
+    EXPECT_EQ(session.Sim().GetEffects().Config(), edited);
+
+    EffectsConfig invalid = edited;
+    invalid.budget.capacity = 0;
+    EXPECT_THROW(session.Open(*FindScene("tutorial"), invalid), InputError);
+    session.Open(*FindScene("rockslide"));
+    EXPECT_EQ(session.Sim().GetEffects().Config(), edited) << "a refused configuration is not chosen";
+
+    Session plain(kScenesDir);
+    plain.Open(*FindScene("grinder"));
+    const EffectsConfig grinderOwn = plain.Sim().GetEffects().Config();
+    plain.OpenNeighbour(1);
+    plain.OpenNeighbour(-1);
+    EXPECT_EQ(plain.Sim().GetEffects().Config(), grinderOwn) << "without a choice, each scene its own";
+}
+
 TEST(TestbedSession, RestartStartsOverWithTheEffectsInForce)
 {
     Opened opened("grinder");

@@ -45,7 +45,8 @@ struct ProgramResult
     std::string output; ///< standard output and standard error together
 };
 /// Runs `program` (a path, e.g. from FindProgram) with `arguments`, each passed as one word (quoted for
-/// the shell), and collects what it prints. Blocks until it exits.
+/// the shell), with an empty standard input (it reads nothing of ours), and collects what it prints. Blocks
+/// until it exits.
 ProgramResult RunProgram(const std::filesystem::path& program, const std::vector<std::string>& arguments);
 
 /// Receives frames one after another. Finish() completes the output; destroying a sink that was not
