@@ -428,7 +428,7 @@ const std::array kSoundFields{
         .unit = "1/(m/s)",
         .range = {0.0f, 1000.0f},
         .doc =
-            "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count * (1/60 s) / dt))",
+            "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count))",
         .step = 0.005f},
     Field<SC>{.name = "particleHitLength",
               .member = &SC::particleHitLength,

@@ -74,8 +74,7 @@ struct SoundConfig
     /// [0, 4].
     float gain = 0.35f;
     /// Particle hits (pool particles of one type hitting one body in a step) sound as short ticks or taps:
-    /// loudness = 1 - exp(-particleHitGain * mean approach speed * sqrt(count * (1/60 s) / dt)), per m/s,
-    /// [0, 1000]: the hits of a step counted per 1/60 s, so the same rain sounds the same at any step rate.
+    /// loudness = 1 - exp(-particleHitGain * mean approach speed * sqrt(count)), per m/s, [0, 1000].
     float particleHitGain = 0.03f;
     /// How long a particle hits voice lasts; its loudness decays to 0 over it (ImpactEnvelope), s, (0, 10].
     float particleHitLength = 0.04f;

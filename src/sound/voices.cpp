@@ -74,15 +74,11 @@ float ImpactLoudness(const SoundRuleDef& rule, const EffectEvent& event)
     return Saturate(rule.approachSpeedGain * event.approachSpeed + rule.impulseGain * event.normalImpulse);
 }
 
-// Many particles sound louder than one, as independent taps add: by the square root of their number. The
-// number is taken per 1/60 s (the hits of a step of dt count as count * (1/60) / dt): a rain of particles
-// sounds the same at any step rate, where the hits per step halve as the rate doubles. At 60 Hz the factor
-// is exactly 1.
-float ParticleHitLoudness(const SoundRuleDef& sound, const EffectEvent& event, float dt)
+// Many particles sound louder than one, as independent taps add: by the square root of their number.
+float ParticleHitLoudness(const SoundRuleDef& sound, const EffectEvent& event)
 {
-    constexpr float kReferenceStep = 1.0f / 60.0f; // s
     return Saturate(sound.approachSpeedGain * event.approachSpeed *
-                    std::sqrt(static_cast<float>(event.count) * (kReferenceStep / dt)));
+                    std::sqrt(static_cast<float>(event.count)));
 }
 
 std::string SortedPair(const std::string& a, const std::string& b)
@@ -265,7 +261,7 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
         if (event.particleType.index < m_hitSounds.size() && event.body != nullptr && event.count > 0)
         {
             Hit(FindOrAdd(VoiceKind::particleHits, event),
-                ParticleHitLoudness(m_hitSounds[event.particleType.index], event, dt), event);
+                ParticleHitLoudness(m_hitSounds[event.particleType.index], event), event);
         }
         return;
     }

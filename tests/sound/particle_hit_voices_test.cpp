@@ -67,30 +67,6 @@ TEST(ParticleHitVoices, LoudnessFollowsCountAndMeanSpeedAndTheVoiceDecaysOverIts
     EXPECT_EQ(voices.Stats().particleHitVoices, 1u);
 }
 
-// A trial's rain of particles sounded three times softer at 240 Hz than at 30 Hz: as many hits a second,
-// but fewer a step. The hits are counted per 1/60 s of the step: the same rain, the same loudness.
-TEST(ParticleHitVoices, TheSameRainSoundsTheSameAtAnyStepRate)
-{
-    EventBench bench(2);
-    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
-    const SoundConfig& sound = bench.config.sound;
-    constexpr std::uint32_t kHitsPerSixtieth = 8;
-    for (const float hz : {30.0f, 60.0f, 120.0f, 240.0f})
-    {
-        SCOPED_TRACE(hz);
-        SoundVoices voices(bench.config);
-        const float dt = 1.0f / hz;
-        const auto count = static_cast<std::uint32_t>(std::lround(kHitsPerSixtieth * 60.0f / hz));
-        const EffectEvent hits = Hits(bench, 0, dirt, count, 2.0f);
-        voices.Step(std::span(&hits, 1), dt);
-        ASSERT_EQ(voices.Voices().size(), 1u);
-        EXPECT_NEAR(
-            voices.Voices()[0].loudness,
-            1.0f - std::exp(-sound.particleHitGain * 2.0f * std::sqrt(static_cast<float>(kHitsPerSixtieth))),
-            1.0e-6f);
-    }
-}
-
 TEST(ParticleHitVoices, AGainOfZeroMakesThemSilentAndStartsNoVoice)
 {
     // particleHitGain 0: loudness 1 - exp(0) = 0, so nothing sounds (214 voices of loudness 1e-6 started).
