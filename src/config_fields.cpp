@@ -422,14 +422,12 @@ const std::array kSoundFields{
               .doc = "the synthesizer's level: a voice's amplitude is gain * loudness before the soft "
                      "limiter",
               .step = 0.01f},
-    Field<SC>{
-        .name = "particleHitGain",
-        .member = &SC::particleHitGain,
-        .unit = "1/(m/s)",
-        .range = {0.0f, 1000.0f},
-        .doc =
-            "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count))",
-        .step = 0.005f},
+    Field<SC>{.name = "particleHitGain",
+              .member = &SC::particleHitGain,
+              .unit = "1/(m/s)",
+              .range = {0.0f, 1000.0f},
+              .doc = "particle hits' loudness = 1 - exp(-particleHitGain * mean speed * sqrt(count))",
+              .step = 0.005f},
     Field<SC>{.name = "particleHitLength",
               .member = &SC::particleHitLength,
               .unit = "s",
