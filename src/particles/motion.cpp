@@ -137,15 +137,20 @@ struct Hardest
     const b2Body* body = nullptr;
 };
 
-// Keeps `hit` in `hardest` when the particle, at `velocity` (at the moment of the touch, before the hit's
-// response), approaches the surface faster than at any earlier touch of the step.
-void KeepHarder(const SweepResult& hit, b2Vec2 velocity, float radius, Hardest& hardest)
+// Keeps `hit` in `hardest` when the particle approaches the surface faster than at any earlier touch of the
+// step. `velocity` is the step's (all of its gravity, before the hit's response); at the touch the particle
+// had only the gravity of the part of the step before it, so the gravity of the part after it (`afterTouch`,
+// 0..1 of the step) is taken off: a particle resting on a surface approaches it at 0 m/s, however long the
+// step.
+void KeepHarder(const SweepResult& hit, b2Vec2 velocity, float afterTouch, const TypeStep& type,
+                Hardest& hardest)
 {
-    const float speed = -b2Dot(velocity - hit.surfaceVelocity, hit.touch.normal);
+    const b2Vec2 atTouch = velocity - afterTouch * type.restVelocity;
+    const float speed = -b2Dot(atTouch - hit.surfaceVelocity, hit.touch.normal);
     if (speed > hardest.speed)
     {
         hardest.speed = speed;
-        hardest.point = hit.touch.position - radius * hit.touch.normal;
+        hardest.point = hit.touch.position - type.side.radius * hit.touch.normal;
         hardest.body = hit.material->body;
     }
 }
@@ -200,10 +205,8 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             touched = true;
             startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
-            // The velocity has all of the step's gravity; at the touch the particle had only the part before
-            // it (a particle resting on a surface approaches it at 0 m/s, however long the step).
-            left *= 1.0f - hit.touch.t; // the part of the step after the touch
-            KeepHarder(hit, velocity - left * type.restVelocity, type.side.radius, hardest);
+            left *= 1.0f - hit.touch.t; // now the part of the step after the touch
+            KeepHarder(hit, velocity, left, type, hardest);
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             remaining *= 1.0f - hit.touch.t;
@@ -245,7 +248,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 position = free;
                 crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, position);
             }
-            KeepHarder(hit, velocity - (1.0f - hit.touch.t) * type.restVelocity, type.side.radius, hardest);
+            KeepHarder(hit, velocity, 1.0f - hit.touch.t, type, hardest);
             velocity =
                 Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
             fixedPoint = false;
