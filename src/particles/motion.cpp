@@ -137,22 +137,34 @@ struct Hardest
     const b2Body* body = nullptr;
 };
 
-// Keeps `hit` in `hardest` when the particle approaches the surface faster than at any earlier touch of the
-// step. `velocity` is the step's (all of its gravity, before the hit's response); at the touch the particle
-// had only the gravity of the part of the step before it, so the gravity of the part after it (`afterTouch`,
-// 0..1 of the step) is taken off: a particle resting on a surface approaches it at 0 m/s, however long the
-// step.
-void KeepHarder(const SweepResult& hit, b2Vec2 velocity, float afterTouch, const TypeStep& type,
-                Hardest& hardest)
+// The speed (m/s) at which a particle approached the surface of `hit` at the moment of the touch: the
+// step's `velocity` has all of the step's gravity, but at the touch the particle had only that of the part
+// of the step before it, so the gravity of the part after it (`afterTouch`, 0..1 of the step) is taken
+// off. A particle resting on a surface touches it at the start of the step and approaches at 0 m/s, however
+// long the step. Positive when approaching.
+float TouchApproachSpeed(const SweepResult& hit, b2Vec2 velocity, float afterTouch, const TypeStep& type)
 {
     const b2Vec2 atTouch = velocity - afterTouch * type.restVelocity;
-    const float speed = -b2Dot(atTouch - hit.surfaceVelocity, hit.touch.normal);
+    return -b2Dot(atTouch - hit.surfaceVelocity, hit.touch.normal);
+}
+
+// Keeps `hit` in `hardest` when the particle approached its surface at `speed` (see TouchApproachSpeed),
+// faster than at any earlier touch of the step.
+void KeepHarder(const SweepResult& hit, float speed, const TypeStep& type, Hardest& hardest)
+{
     if (speed > hardest.speed)
     {
         hardest.speed = speed;
         hardest.point = hit.touch.position - type.side.radius * hit.touch.normal;
         hardest.body = hit.material->body;
     }
+}
+
+// Bounces `velocity` off the surface of `hit`, approached at `touchSpeed` (see Respond).
+b2Vec2 Bounce(const SweepResult& hit, b2Vec2 velocity, float touchSpeed, const TypeStep& type)
+{
+    return Respond(velocity, touchSpeed, hit.touch.normal,
+                   Mix(type.side, *hit.material, hit.surfaceVelocity));
 }
 
 // Sweeps a particle whose velocity has had this step's gravity and drag, from `position`. `part`: what
@@ -206,9 +218,9 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
             left *= 1.0f - hit.touch.t; // now the part of the step after the touch
-            KeepHarder(hit, velocity, left, type, hardest);
-            velocity =
-                Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
+            const float touchSpeed = TouchApproachSpeed(hit, velocity, left, type);
+            KeepHarder(hit, touchSpeed, type, hardest);
+            velocity = Bounce(hit, velocity, touchSpeed, type);
             remaining *= 1.0f - hit.touch.t;
         }
         // Bit for bit, so that skipping the sweep of a resting particle gives exactly what it would have.
@@ -248,9 +260,9 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 position = free;
                 crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, position);
             }
-            KeepHarder(hit, velocity, 1.0f - hit.touch.t, type, hardest);
-            velocity =
-                Respond(velocity, hit.touch.normal, Mix(type.side, *hit.material, hit.surfaceVelocity));
+            const float touchSpeed = TouchApproachSpeed(hit, velocity, 1.0f - hit.touch.t, type);
+            KeepHarder(hit, touchSpeed, type, hardest);
+            velocity = Bounce(hit, velocity, touchSpeed, type);
             fixedPoint = false;
             touched = true;
         }

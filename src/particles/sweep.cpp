@@ -257,7 +257,7 @@ bool SweepPolygon(const SweepInput& in, const b2Vec2* vertices, const b2Vec2* no
     return SweepEdges(in, vertices, count, best);
 }
 
-b2Vec2 Respond(b2Vec2 velocity, b2Vec2 normal, const SurfaceResponse& surface)
+b2Vec2 Respond(b2Vec2 velocity, float touchSpeed, b2Vec2 normal, const SurfaceResponse& surface)
 {
     const b2Vec2 relative = velocity - surface.velocity;
     const float approach = b2Dot(relative, normal);
@@ -266,7 +266,7 @@ b2Vec2 Respond(b2Vec2 velocity, b2Vec2 normal, const SurfaceResponse& surface)
         return velocity;
     }
     const b2Vec2 tangential = relative - approach * normal;
-    const float bounce = -approach > surface.restSpeed ? -surface.restitution * approach : 0.0f;
+    const float bounce = touchSpeed > surface.restSpeed ? surface.restitution * touchSpeed : 0.0f;
     const float normalChange = bounce - approach; // > 0
     const float slide = tangential.Length();
     const float slideAfter = std::max(0.0f, slide - surface.friction * normalChange);

@@ -67,9 +67,14 @@ struct SurfaceResponse
     float restSpeed = 0.0f;      ///< below this approach speed (m/s) nothing bounces
 };
 
-/// The velocity after touching: relative to the surface, the approaching normal part is reflected with
-/// restitution (or removed below the rest speed) and the tangential part loses Coulomb friction times
-/// the normal change, never reversing. A velocity leaving the surface is kept.
-b2Vec2 Respond(b2Vec2 velocity, b2Vec2 normal, const SurfaceResponse& surface);
+/// The velocity after touching. `velocity` is the step's (all of its gravity); `touchSpeed` (m/s) is the
+/// speed at which the particle approached the surface at the moment of the touch, before the gravity of
+/// the rest of the step (see TouchApproachSpeed). Relative to the surface, the approaching normal part is
+/// removed and replaced by a bounce of restitution times `touchSpeed`, or none when `touchSpeed` is at
+/// most the rest speed; the tangential part loses Coulomb friction times the whole normal change (the
+/// surface also holds the particle against the gravity after the touch), never reversing. A velocity
+/// leaving the surface is kept. With `touchSpeed` equal to the step velocity's own approach speed this is
+/// the plain reflection.
+b2Vec2 Respond(b2Vec2 velocity, float touchSpeed, b2Vec2 normal, const SurfaceResponse& surface);
 
 } // namespace cfx::particles

@@ -104,6 +104,38 @@ TEST(ParticleHits, RestingParticlesAreNotHitsAfterALongStep)
     }
 }
 
+// The same hitch on bouncy particles: before, the bounce took the step's whole velocity, so each resting
+// particle was thrown up by its restitution times the hitch's gravity (dirt after 0.25 s: 12 cm) and landed
+// as a hit a few steps later. The bounce takes the speed at the touch: they stay on the ground, and no later
+// step hears them.
+TEST(ParticleHits, RestingParticlesNeitherBounceNorLandAsHitsAfterALongStep)
+{
+    for (const float hitch : {0.1f, 0.25f, 1.0f})
+    {
+        SCOPED_TRACE(hitch);
+        Pool scene({Ball(0.5f)});
+        LayOnGround(scene);
+        for (int step = 0; step < 30; ++step)
+        {
+            scene.StepAll();
+        }
+        scene.world->Step(hitch, 8, 3);
+        scene.system->Step(hitch, scene.world->GetGravity());
+        for (int step = 0; step < 60; ++step)
+        {
+            ASSERT_TRUE(scene.system->Hits().empty()) << "step " << step << " after the hitch";
+            const ParticleView view = scene.system->View();
+            for (std::uint32_t i = 0; i < view.count; ++i)
+            {
+                ASSERT_NEAR(view.positionY[view.Slot(i)], scene.types[0].radius, 1.0e-4f)
+                    << "particle " << i << ", step " << step;
+            }
+            scene.StepAll();
+        }
+        EXPECT_EQ(scene.system->Count(), 20u);
+    }
+}
+
 TEST(ParticleHits, AreGroupedPerTypeAndBodyInOrderOfFirstAppearance)
 {
     Pool scene({Ball(), Ball()});

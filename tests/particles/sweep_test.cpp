@@ -148,14 +148,35 @@ TEST(Sweep, RespondBouncesRestsAndRubs)
     surface.friction = 0.0f;
     surface.restSpeed = 0.5f;
     const b2Vec2 up(0.0f, 1.0f);
-    EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), up, surface).y, 2.0f, 1e-6f);
-    EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), up, surface).x, 2.0f, 1e-6f);
-    EXPECT_EQ(Respond(b2Vec2(2.0f, -0.3f), up, surface).y, 0.0f) << "below the rest speed";
+    EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), 4.0f, up, surface).y, 2.0f, 1e-6f);
+    EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), 4.0f, up, surface).x, 2.0f, 1e-6f);
+    EXPECT_EQ(Respond(b2Vec2(2.0f, -0.3f), 0.3f, up, surface).y, 0.0f) << "below the rest speed";
     surface.friction = 10.0f;
-    EXPECT_EQ(Respond(b2Vec2(2.0f, -4.0f), up, surface).x, 0.0f) << "friction stops, never reverses";
+    EXPECT_EQ(Respond(b2Vec2(2.0f, -4.0f), 4.0f, up, surface).x, 0.0f) << "friction stops, never reverses";
     surface.velocity = b2Vec2(3.0f, 0.0f);
-    EXPECT_NEAR(Respond(b2Vec2(0.0f, -4.0f), up, surface).x, 3.0f, 1e-6f) << "carried by the surface";
-    EXPECT_EQ(Respond(b2Vec2(0.0f, 4.0f), up, surface).y, 4.0f) << "leaving: kept";
+    EXPECT_NEAR(Respond(b2Vec2(0.0f, -4.0f), 4.0f, up, surface).x, 3.0f, 1e-6f) << "carried by the surface";
+    EXPECT_EQ(Respond(b2Vec2(0.0f, 4.0f), -4.0f, up, surface).y, 4.0f) << "leaving: kept";
+}
+
+TEST(Sweep, RespondBouncesWithTheSpeedAtTheTouch)
+{
+    SurfaceResponse surface;
+    surface.restitution = 0.5f;
+    surface.friction = 0.25f;
+    surface.restSpeed = 0.5f;
+    const b2Vec2 up(0.0f, 1.0f);
+    // A long step's gravity (2.5 m/s) on a particle that touched at its start: no bounce, and the
+    // friction of the whole normal change (2.5 m/s, 0.625 m/s of slide) still acts.
+    const b2Vec2 rested = Respond(b2Vec2(2.0f, -2.5f), 0.0f, up, surface);
+    EXPECT_EQ(rested.y, 0.0f);
+    EXPECT_NEAR(rested.x, 2.0f - 0.25f * 2.5f, 1e-6f);
+    // Touched at 3 m/s, 1 m/s more gravity after it: the bounce is half of 3 m/s, not of 4 m/s.
+    const b2Vec2 bounced = Respond(b2Vec2(2.0f, -4.0f), 3.0f, up, surface);
+    EXPECT_NEAR(bounced.y, 1.5f, 1e-6f);
+    EXPECT_NEAR(bounced.x, 2.0f - 0.25f * 5.5f, 1e-6f);
+    // A particle rising into a ceiling approached it faster at the touch than at the step's end.
+    const b2Vec2 down(0.0f, -1.0f);
+    EXPECT_NEAR(Respond(b2Vec2(0.0f, 3.0f), 4.0f, down, surface).y, -2.0f, 1e-6f);
 }
 
 constexpr Grid::Listing kListings[] = {Grid::Listing::overlapped, Grid::Listing::neighbourhood};
