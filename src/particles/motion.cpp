@@ -180,8 +180,10 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
               b2Vec2& position, b2Vec2& velocity, bool& crushed, Hardest& hardest, float* viaX, float* viaY)
 {
     const b2Vec2 start = position;
+    const b2Vec2 stepVelocity = velocity;
     // The velocity every particle at rest enters the step with: then the next step repeats this one.
     const bool fromRest = SameBits(velocity, type.restVelocity);
+    float staticReach2 = 0.0f; // squared distance from start to the first static touch (0: none)
     float clearance = kUnknownClearance;
     bool fixedPoint = false;
     bool touched = false;
@@ -214,6 +216,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 position += in.d;
                 break;
             }
+            staticReach2 = touched ? staticReach2 : b2DistanceSquared(hit.touch.position, start);
             touched = true;
             startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
@@ -259,6 +262,14 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             {
                 position = free;
                 crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, position);
+            }
+            // Met the body before any static geometry (a long step on a particle resting on a box that
+            // stands on the ground sweeps it through the box to the ground): the static touches are on the
+            // far side of the body and never happened.
+            if (hit.touch.t * hit.touch.t * b2DistanceSquared(free, start) < staticReach2)
+            {
+                velocity = stepVelocity;
+                hardest = Hardest{};
             }
             const float touchSpeed = TouchApproachSpeed(hit, velocity, 1.0f - hit.touch.t, type);
             KeepHarder(hit, touchSpeed, type, hardest);
