@@ -65,8 +65,8 @@ struct SoundVoice
     /// 0..1 now: a scrape's loudness (held during its minimum duration, fading during its release), an
     /// impact's peak times ImpactEnvelope of its age.
     float loudness = 0.0f;
-    /// Impacts and particle hits: the loudness at the start, the loudest of the events merged into it.
-    /// Scrapes: the loudest so far.
+    /// Impacts: the loudness at the start, the loudest of the events merged into it. Particle hits: that of
+    /// all the hits merged into it so far (their number and mean speed). Scrapes: the loudest so far.
     float peak = 0.0f;
     float slipSpeed = 0.0f; ///< m/s, scrapes: tangential speed of the scrape's last event
     /// m/s, impacts: the fastest merged impact's approach speed; particle hits: the fastest mean speed
@@ -166,6 +166,11 @@ private:
         float target = 0.0f;        ///< loudness of the attached scrape's last event
         float pending = 0.0f; ///< impacts, particle hits: loudness of one waiting to start a voice; 0: none
         std::uint32_t pendingId = 0;
+        /// Particle hits: the hits merged into the pending or sounding voice so far, and their approach
+        /// speeds summed (m/s), each step's weighted by the part of it within the merge window: its loudness
+        /// is that of the hits of one window's time, however many steps they came in.
+        float mergedHits = 0.0f;
+        float mergedSpeedSum = 0.0f;
         double lastStart = -1.0e300; ///< time of the pair's last voice start
         double releaseStart = 0.0;
         float releaseFrom = 0.0f;
@@ -182,6 +187,8 @@ private:
 
     Pair& FindOrAdd(VoiceKind kind, const EffectEvent& event);
     const SoundRuleDef& SoundOf(const Pair& pair) const;
+    double MergeWindow(const Pair& pair) const;
+    bool Merges(const Pair& pair) const;
     void Hit(Pair& pair, float loudness, const EffectEvent& event);
     Pair* FindScrape(std::uint32_t scrapeId);
     void OnEvent(const EffectEvent& event, float dt);

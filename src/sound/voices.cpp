@@ -75,10 +75,10 @@ float ImpactLoudness(const SoundRuleDef& rule, const EffectEvent& event)
 }
 
 // Many particles sound louder than one, as independent taps add: by the square root of their number.
-float ParticleHitLoudness(const SoundRuleDef& sound, const EffectEvent& event)
+// `speedSum`: their approach speeds summed (m/s), so the mean speed times sqrt(count).
+float ParticleHitLoudness(const SoundRuleDef& sound, float speedSum, float count)
 {
-    return Saturate(sound.approachSpeedGain * event.approachSpeed *
-                    std::sqrt(static_cast<float>(event.count)));
+    return Saturate(sound.approachSpeedGain * speedSum / std::sqrt(count));
 }
 
 std::string SortedPair(const std::string& a, const std::string& b)
@@ -207,13 +207,30 @@ const SoundRuleDef& SoundVoices::VoiceSound(const SoundVoice& voice) const
                                                  : m_rules[voice.rule.index];
 }
 
+// How long after its start an impact or particle hits voice of `pair` takes in events (s): the merge
+// window, or less when the voice is shorter (an event merged into a voice that stops in the same step
+// would be lost).
+double SoundVoices::MergeWindow(const Pair& pair) const
+{
+    return std::min(static_cast<double>(m_mergeWindow), static_cast<double>(SoundOf(pair).impactLength));
+}
+
+// Whether an impact or particle hits event of `pair` now merges into its voice: one waits to start, or
+// sounds since at most its merge window (and not its whole length).
+bool SoundVoices::Merges(const Pair& pair) const
+{
+    const double age = m_time - pair.voice.startTime;
+    return pair.pending > 0.0f || (pair.voice.id != 0 && age <= m_mergeWindow &&
+                                   age < static_cast<double>(SoundOf(pair).impactLength));
+}
+
 // An impact or particle hits event of `pair` at `loudness`: merged into the voice it starts or sounds within
 // the merge window, dropped inside the cooldown or when silent, else waiting to start a voice.
 void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event)
 {
     const bool impact = pair.kind == VoiceKind::impact;
     const bool sounding = pair.voice.id != 0;
-    if (pair.pending > 0.0f || (sounding && m_time - pair.voice.startTime <= m_mergeWindow))
+    if (Merges(pair))
     {
         ++(impact ? m_stats.impactsMerged : m_stats.particleHitsMerged);
         if (sounding)
@@ -260,8 +277,24 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
     {
         if (event.particleType.index < m_hitSounds.size() && event.body != nullptr && event.count > 0)
         {
-            Hit(FindOrAdd(VoiceKind::particleHits, event),
-                ParticleHitLoudness(m_hitSounds[event.particleType.index], event), event);
+            // The hits merging into one voice count together, whatever steps they came in: a rain of hits
+            // sounds as loud at any step rate (more steps a window, fewer hits a step). A step's hits came
+            // over its dt; those of a step that reaches past the window count for the part within it. The
+            // first step's count whole (a lone hit sounds alike at any rate).
+            Pair& pair = FindOrAdd(VoiceKind::particleHits, event);
+            const bool merges = Merges(pair);
+            const double age = pair.voice.id != 0 ? m_time - pair.voice.startTime : 0.0;
+            const float weight =
+                merges ? std::clamp(static_cast<float>((MergeWindow(pair) - age) / static_cast<double>(dt)),
+                                    0.0f, 1.0f)
+                       : 1.0f;
+            const float hits = weight * static_cast<float>(event.count);
+            pair.mergedHits = (merges ? pair.mergedHits : 0.0f) + hits;
+            pair.mergedSpeedSum = (merges ? pair.mergedSpeedSum : 0.0f) + event.approachSpeed * hits;
+            Hit(pair,
+                ParticleHitLoudness(m_hitSounds[event.particleType.index], pair.mergedSpeedSum,
+                                    pair.mergedHits),
+                event);
         }
         return;
     }
