@@ -92,6 +92,10 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         cell *= 1.5f;
     }
 
+    if (touches != nullptr)
+    {
+        ReserveForAnyAlignment(boxes);
+    }
     const std::size_t cells = static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows);
     m_cellStart.assign(cells + 1, 0);
     // The cells listing a box: those it overlaps, and `spread` more on every side; with `touches`, only
@@ -135,6 +139,28 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         m_cellStart[c] = m_cellStart[c - 1];
     }
     m_cellStart[0] = 0;
+}
+
+void Grid::ReserveForAnyAlignment(std::span<const b2AABB> boxes)
+{
+    // A box w wide covers at most floor(w / cell) + 2 columns however it sits on the cells, and the grid
+    // one more column than now; the same for rows. The 0.1 % covers a cell size that rounding changes.
+    const int spread = Spread();
+    const float perCell = 1.001f * m_inverseCell;
+    const auto most = [&](float extent, int lines)
+    {
+        const double covered = std::floor(static_cast<double>(extent * perCell)) + 2.0 + 2.0 * spread;
+        return static_cast<std::size_t>(std::min(covered, static_cast<double>(lines) + 1.0));
+    };
+    std::size_t items = 0;
+    for (const b2AABB& box : boxes)
+    {
+        const b2Vec2 extent = box.upperBound - box.lowerBound;
+        items += most(extent.x, m_columns) * most(extent.y, m_rows);
+    }
+    m_items.reserve(items);
+    m_cellStart.reserve((static_cast<std::size_t>(m_columns) + 1) * (static_cast<std::size_t>(m_rows) + 1) +
+                        1);
 }
 
 std::size_t Grid::CountItems(std::span<const b2AABB> boxes) const

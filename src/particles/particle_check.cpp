@@ -21,13 +21,14 @@ bool Accepts(const b2Fixture& fixture, const ParticleSide& side)
     return !fixture.IsSensor() && side.Accepts(filter.categoryBits, filter.maskBits);
 }
 
-// Whether the path p -> q crosses child `child` of an edge or chain fixture (false for other shapes).
+// Whether the path p -> q crosses child `child` of an edge or chain fixture, or ends on it (false for other
+// shapes).
 bool PathCrosses(const b2Fixture& fixture, int child, b2Vec2 p, b2Vec2 q)
 {
     const b2Transform& xf = fixture.GetBody()->GetTransform();
     b2EdgeShape edge;
     return detail::ChildEdge(*fixture.GetShape(), child, edge) &&
-           PathCrossesEdge(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided);
+           PathCrossesEdge(p, q, b2Mul(xf, edge.m_vertex1), b2Mul(xf, edge.m_vertex2), edge.m_oneSided, true);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 // cannot be put anywhere free is crushed and counted. The check (ParticleSystemOptions::checkParticles)
 // asks Box2D itself; the tests also count particles below the ground's top directly.
 #include "particles/particle_pool_fixture.h"
+#include "particles/test_grounds.h"
 
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
@@ -14,87 +15,6 @@ namespace cfx::test
 {
 namespace
 {
-
-enum class Ground
-{
-    twoSidedEdge,
-    chain,      // one-sided, 0.5 m segments, solid from above
-    thickBox,   // 1 m thick
-    splitBoxes, // 0.25 m wide polygons side by side
-};
-
-const char* GroundName(Ground ground)
-{
-    switch (ground)
-    {
-    case Ground::twoSidedEdge:
-        return "Edge";
-    case Ground::chain:
-        return "Chain";
-    case Ground::thickBox:
-        return "Box";
-    case Ground::splitBoxes:
-        return "SplitBoxes";
-    }
-    return "";
-}
-
-constexpr float kHalfWidth = 30.0f;
-
-// Static ground whose top is y = 0 over x in [-kHalfWidth, kHalfWidth].
-std::vector<b2Fixture*> CreateGround(b2World& world, Ground ground, float friction)
-{
-    b2BodyDef def;
-    b2Body* body = world.CreateBody(&def);
-    std::vector<b2Fixture*> fixtures;
-    b2FixtureDef fixture;
-    fixture.friction = friction;
-    switch (ground)
-    {
-    case Ground::twoSidedEdge:
-    {
-        b2EdgeShape edge;
-        edge.SetTwoSided(b2Vec2(-kHalfWidth, 0.0f), b2Vec2(kHalfWidth, 0.0f));
-        fixture.shape = &edge;
-        fixtures.push_back(body->CreateFixture(&fixture));
-        break;
-    }
-    case Ground::chain:
-    {
-        std::vector<b2Vec2> vertices;
-        for (float x = kHalfWidth; x >= -kHalfWidth; x -= 0.5f) // right to left: the normal points up
-        {
-            vertices.emplace_back(x, 0.0f);
-        }
-        b2ChainShape chain;
-        chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()), vertices.front() + b2Vec2(1, 0),
-                          vertices.back() - b2Vec2(1, 0));
-        fixture.shape = &chain;
-        fixtures.push_back(body->CreateFixture(&fixture));
-        break;
-    }
-    case Ground::thickBox:
-    {
-        b2PolygonShape box;
-        box.SetAsBox(kHalfWidth, 0.5f, b2Vec2(0.0f, -0.5f), 0.0f);
-        fixture.shape = &box;
-        fixtures.push_back(body->CreateFixture(&fixture));
-        break;
-    }
-    case Ground::splitBoxes:
-    {
-        for (float x = -kHalfWidth; x < kHalfWidth; x += 0.25f)
-        {
-            b2PolygonShape box;
-            box.SetAsBox(0.125f, 0.5f, b2Vec2(x + 0.125f, -0.5f), 0.0f);
-            fixture.shape = &box;
-            fixtures.push_back(body->CreateFixture(&fixture));
-        }
-        break;
-    }
-    }
-    return fixtures;
-}
 
 // Live, colliding particles whose centre is below the ground's top (over the ground's width).
 std::uint32_t BelowGround(const ParticleView& view)

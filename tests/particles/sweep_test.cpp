@@ -600,6 +600,18 @@ TEST(PathCrossesEdge, ThroughAVertexAcrossNotAlongNorFromBehind)
                                             b2Vec2(0.0f, 0.0f), false));
     EXPECT_FALSE(particles::PathCrossesEdge(down0, b2Vec2(0.0f, 0.0f), b2Vec2(0.5f, 0.0f),
                                             b2Vec2(-0.5f, 0.0f), false));
+    // The particle check counts ending on it (a centre on a surface; far from the origin a particle crossed
+    // in two steps, onto the line and off it), from the front of a one-sided segment only; starting on it
+    // never counts.
+    const b2Vec2 on(0.1f, 0.0f);
+    EXPECT_TRUE(particles::PathCrossesEdge(down0, on, b2Vec2(0.5f, 0.0f), b2Vec2(-0.5f, 0.0f), false, true));
+    EXPECT_TRUE(particles::PathCrossesEdge(down0, on, b2Vec2(0.5f, 0.0f), b2Vec2(-0.5f, 0.0f), true, true));
+    EXPECT_TRUE(particles::PathCrossesEdge(down1, on, b2Vec2(0.5f, 0.0f), b2Vec2(-0.5f, 0.0f), false, true));
+    EXPECT_FALSE(particles::PathCrossesEdge(down1, on, b2Vec2(0.5f, 0.0f), b2Vec2(-0.5f, 0.0f), true, true));
+    EXPECT_FALSE(particles::PathCrossesEdge(on, down1, b2Vec2(0.5f, 0.0f), b2Vec2(-0.5f, 0.0f), false, true));
+    EXPECT_FALSE(particles::PathCrossesEdge(down0, b2Vec2(0.6f, 0.0f), b2Vec2(0.5f, 0.0f),
+                                            b2Vec2(-0.5f, 0.0f), false, true))
+        << "on the line beyond the segment";
 }
 
 } // namespace
