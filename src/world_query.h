@@ -18,9 +18,12 @@
 namespace cfx::detail
 {
 
-/// Calls visit(fixture, child) once for each child proxy whose broad-phase box (fattened, as Box2D keeps
-/// it) overlaps `box`, in the order b2World::QueryAABB reports them; stops when visit returns false.
-template <class Visit> void QueryChildren(const b2World& world, const b2AABB& box, Visit&& visit)
+/// Calls visit(fixture, child, fatBox) once for each child proxy whose broad-phase box (fattened, as Box2D
+/// keeps it: `fatBox`) overlaps `box` (b2TestOverlap), in the order b2World::QueryAABB reports them; stops
+/// when visit returns false. The order is that of a depth-first walk of Box2D's dynamic tree, pruned where a
+/// node's box misses `box`; a node's box holds its children's, so a query with a box inside `box` reports
+/// the children this one reports whose fatBox overlaps it, in the same order (while the tree is unchanged).
+template <class Visit> void QueryProxies(const b2World& world, const b2AABB& box, Visit&& visit)
 {
     struct Callback
     {
@@ -29,12 +32,21 @@ template <class Visit> void QueryChildren(const b2World& world, const b2AABB& bo
         bool QueryCallback(int32 proxyId)
         {
             const auto* proxy = static_cast<const b2FixtureProxy*>(broadPhase->GetUserData(proxyId));
-            return (*visit)(proxy->fixture, proxy->childIndex);
+            return (*visit)(proxy->fixture, proxy->childIndex, broadPhase->GetFatAABB(proxyId));
         }
     };
     const b2BroadPhase& broadPhase = world.GetContactManager().m_broadPhase;
     Callback callback{&broadPhase, &visit};
     broadPhase.Query(&callback, box);
+}
+
+/// Calls visit(fixture, child) once for each child proxy whose broad-phase box (fattened, as Box2D keeps
+/// it) overlaps `box`, in the order b2World::QueryAABB reports them; stops when visit returns false.
+template <class Visit> void QueryChildren(const b2World& world, const b2AABB& box, Visit&& visit)
+{
+    QueryProxies(world, box,
+                 [&visit](const b2Fixture* fixture, int child, const b2AABB&)
+                 { return visit(fixture, child); });
 }
 
 } // namespace cfx::detail
