@@ -31,13 +31,23 @@ std::size_t CountProblems(const std::vector<Diagnostic>& diagnostics)
     return count;
 }
 
-static std::string FirstMessage(const std::vector<Diagnostic>& diagnostics)
+static std::string AllMessages(const std::vector<Diagnostic>& diagnostics)
 {
-    return diagnostics.empty() ? std::string("invalid input") : diagnostics.front().ToString();
+    if (diagnostics.empty())
+    {
+        return "invalid input";
+    }
+    std::string text = diagnostics.front().ToString();
+    for (std::size_t i = 1; i < diagnostics.size(); ++i)
+    {
+        text += '\n';
+        text += diagnostics[i].ToString();
+    }
+    return text;
 }
 
 InputError::InputError(std::vector<Diagnostic> diagnostics)
-    : std::runtime_error(FirstMessage(diagnostics)), m_diagnostics(std::move(diagnostics))
+    : std::runtime_error(AllMessages(diagnostics)), m_diagnostics(std::move(diagnostics))
 {
 }
 

@@ -457,11 +457,11 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
                                                     std::to_string(m_impl->types.size()) + ")"
                                               : std::string("no particle type (ParticleTypeId{})"));
     }
-    if (!(spawn.life > 0.0f))
+    if (spawn.life <= 0.0f)
     {
         return;
     }
-    if (!particles::Sane(spawn.position) || !particles::Sane(spawn.velocity))
+    if (std::isnan(spawn.life) || !particles::Sane(spawn.position) || !particles::Sane(spawn.velocity))
     {
         ++m_counters.nonFinite; // never stored: nothing not finite reaches a step, or Box2D
         return;

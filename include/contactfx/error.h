@@ -40,7 +40,8 @@ struct Diagnostic
 /// How many problems `diagnostics` stands for: its entries, a note counting as the problems it did not list.
 std::size_t CountProblems(const std::vector<Diagnostic>& diagnostics);
 
-/// Thrown on bad input. Holds at least one diagnostic; what() is the first one's ToString().
+/// Thrown on bad input. Holds at least one diagnostic; what() is every diagnostic's ToString(), one per line
+/// (a program that logs only what() sees every problem).
 class InputError : public std::runtime_error
 {
 public:

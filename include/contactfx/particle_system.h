@@ -55,7 +55,8 @@ struct ParticleSpawn
 {
     b2Vec2 position{0.0f, 0.0f}; ///< m, world
     b2Vec2 velocity{0.0f, 0.0f}; ///< m/s
-    float life = 1.0f;           ///< (0, 1]; a particle with life <= 0 is not added
+    float life = 1.0f;           ///< (0, 1]; a particle with life <= 0 is not added, one with NaN not
+                                 ///< either (counted in ParticleCounters::nonFinite); above 1: 1
     ParticleTypeId type;         ///< one of the system's types (else Spawn throws)
 };
 
@@ -127,7 +128,8 @@ struct ParticleCounters
     /// collides with (a two-sided edge from either side, a one-sided one from its front).
     std::uint64_t crossings = 0;
     /// Pool particles that died because their position or velocity was not finite, or beyond 1e7 (m,
-    /// m/s): thrown out of the world by absurd numbers (a restitution of 1e30, a spawn at infinity).
+    /// m/s): thrown out of the world by absurd numbers (a restitution of 1e30, a spawn at infinity); and
+    /// spawns refused for such a position or velocity, or a life that is NaN.
     /// Nothing not finite reaches the collision or the draw data.
     std::uint64_t nonFinite = 0;
     /// Body steps in which a body was left out of particle collision because its position, rotation,

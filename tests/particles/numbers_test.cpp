@@ -44,9 +44,11 @@ TEST(ParticleNumbers, SpawnsThatAreNotFiniteAreRefusedAndCounted)
         scene.Add(b2Vec2(0.0f, 1.0f), b2Vec2(kNaN, 0.0f));
         scene.Add(b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, -3.0e38f));
         scene.Add(b2Vec2(2.0e7f, 1.0f));
-        scene.Add(b2Vec2(0.0f, 1.0f)); // the only sane one
+        scene.Add(b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 0.0f), kNaN);  // a trial's was dropped and not counted
+        scene.Add(b2Vec2(0.0f, 1.0f), b2Vec2(0.0f, 0.0f), -1.0f); // not added, not counted: life <= 0
+        scene.Add(b2Vec2(0.0f, 1.0f));                            // the only sane one
         EXPECT_EQ(scene.system->Count(), 1u);
-        EXPECT_EQ(scene.system->Counters().nonFinite, 5u);
+        EXPECT_EQ(scene.system->Counters().nonFinite, 6u);
         EXPECT_EQ(scene.world->GetBodyCount(), backend == ParticleBackend::body ? 2 : 1);
         scene.StepAll();
         EXPECT_TRUE(AllFinite(scene));

@@ -352,8 +352,15 @@ TEST(RubeErrors, SeveralErrorsAreAllReported)
     }
     catch (const InputError& error)
     {
-        EXPECT_EQ(std::string(error.what()), error.Diagnostics().front().ToString());
+        // what() lists every problem, one per line: a game that logs only what() saw 1 of 5 (a trial).
+        std::string lines;
+        for (const Diagnostic& diagnostic : error.Diagnostics())
+        {
+            lines += (lines.empty() ? "" : "\n") + diagnostic.ToString();
+        }
+        EXPECT_EQ(std::string(error.what()), lines);
         EXPECT_NE(std::string(error.what()).find("several.json"), std::string::npos);
+        EXPECT_NE(std::string(error.what()).find("joint[0].bodyB"), std::string::npos);
     }
 }
 
