@@ -70,6 +70,15 @@ void RunSteadyState(RecyclePolicy policy)
     EXPECT_GT(box->GetPosition().y, -1.0f);
 }
 
+// A particle type that lives through any test.
+ParticleTypeDef LongLivedDust()
+{
+    ParticleTypeDef type;
+    type.name = "dust";
+    type.lifetime = 100.0f;
+    return type;
+}
+
 } // namespace
 
 TEST(ParticleAllocation, NoneOnceWarmedUpOldestFirst)
@@ -96,9 +105,7 @@ TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
             0.1f + 0.02f * static_cast<float>(i % 5), 0.1f, 0.5f);
         bodies.push_back(body);
     }
-    ParticleTypeDef type;
-    type.name = "dust";
-    type.lifetime = 100.0f;
+    const ParticleTypeDef type = LongLivedDust();
     ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1),
                              ParticleBudget{500, RecyclePolicy::oldest});
     for (int i = 0; i < 500; ++i)
@@ -156,9 +163,7 @@ TEST(ParticleAllocation, NoneWhenTheOriginShiftsUnderAFinelySplitGround)
         wall.SetAsBox(0.5f, 5.0f, b2Vec2(x, 4.0f), 0.0f);
         ground->CreateFixture(&wall, 0.0f);
     }
-    ParticleTypeDef type;
-    type.name = "dust";
-    type.lifetime = 100.0f;
+    const ParticleTypeDef type = LongLivedDust();
     ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1),
                              ParticleBudget{300, RecyclePolicy::oldest});
     for (int i = 0; i < 300; ++i)

@@ -141,12 +141,24 @@ TEST(Sweep, EarlierTouchWins)
     EXPECT_NEAR(touch.position.y, 1.0f + kR, 1e-5f);
 }
 
-TEST(Sweep, RespondBouncesRestsAndRubs)
+namespace
+{
+
+// Restitution 0.5, nothing bounces below 0.5 m/s.
+SurfaceResponse HalfBouncing(float friction)
 {
     SurfaceResponse surface;
     surface.restitution = 0.5f;
-    surface.friction = 0.0f;
+    surface.friction = friction;
     surface.restSpeed = 0.5f;
+    return surface;
+}
+
+} // namespace
+
+TEST(Sweep, RespondBouncesRestsAndRubs)
+{
+    SurfaceResponse surface = HalfBouncing(0.0f);
     const b2Vec2 up(0.0f, 1.0f);
     EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), 4.0f, up, surface).y, 2.0f, 1e-6f);
     EXPECT_NEAR(Respond(b2Vec2(2.0f, -4.0f), 4.0f, up, surface).x, 2.0f, 1e-6f);
@@ -160,10 +172,7 @@ TEST(Sweep, RespondBouncesRestsAndRubs)
 
 TEST(Sweep, RespondBouncesWithTheSpeedAtTheTouch)
 {
-    SurfaceResponse surface;
-    surface.restitution = 0.5f;
-    surface.friction = 0.25f;
-    surface.restSpeed = 0.5f;
+    const SurfaceResponse surface = HalfBouncing(0.25f);
     const b2Vec2 up(0.0f, 1.0f);
     // A long step's gravity (2.5 m/s) on a particle that touched at its start: no bounce, and the
     // friction of the whole normal change (2.5 m/s, 0.625 m/s of slide) still acts.
