@@ -166,11 +166,12 @@ private:
         float target = 0.0f;        ///< loudness of the attached scrape's last event
         float pending = 0.0f; ///< impacts, particle hits: loudness of one waiting to start a voice; 0: none
         std::uint32_t pendingId = 0;
-        /// Particle hits: the hits merged into the pending or sounding voice so far, and their approach
-        /// speeds summed (m/s), each step's weighted by the part of it within the merge window: its loudness
-        /// is that of the hits of one window's time, however many steps they came in.
+        /// Particle hits: the hits merged into the pending or sounding voice so far, their approach speeds
+        /// summed (m/s), and the time its steps took in (s, their dt summed): its loudness is that of all
+        /// of them, however many steps they came in.
         float mergedHits = 0.0f;
         float mergedSpeedSum = 0.0f;
+        double mergedTime = 0.0;
         double lastStart = -1.0e300; ///< time of the pair's last voice start
         double releaseStart = 0.0;
         float releaseFrom = 0.0f;
@@ -189,7 +190,7 @@ private:
     const SoundRuleDef& SoundOf(const Pair& pair) const;
     double MergeWindow(const Pair& pair) const;
     bool Merges(const Pair& pair) const;
-    void Hit(Pair& pair, float loudness, const EffectEvent& event);
+    void Hit(Pair& pair, float loudness, const EffectEvent& event, bool merges);
     Pair* FindScrape(std::uint32_t scrapeId);
     void OnEvent(const EffectEvent& event, float dt);
     void Advance(Pair& pair);
@@ -206,6 +207,7 @@ private:
     std::vector<SoundVoice> m_voices;
     std::vector<VoiceChange> m_changes;
     double m_time = 0.0;
+    double m_dt = 0.0; ///< s, of the step being taken
     std::uint32_t m_nextId = 1;
     std::uint32_t m_hitsThisStep = 0; ///< particle hits events read so far in this Step
     SoundStats m_stats;

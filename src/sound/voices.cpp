@@ -58,6 +58,10 @@ const b2Body* BodyOf(const b2Fixture* fixture)
     return fixture != nullptr ? fixture->GetBody() : nullptr;
 }
 
+// Step times summed in doubles from floats land a little off the sum of their values (3 x 1/60 s as floats
+// is 5.0000000707e-2 s): a merge time is compared with this much room (s).
+constexpr double kTimeSlop = 1.0e-6;
+
 float Saturate(float drive)
 {
     return 1.0f - std::exp(-std::max(drive, 0.0f));
@@ -216,21 +220,35 @@ double SoundVoices::MergeWindow(const Pair& pair) const
 }
 
 // Whether an impact or particle hits event of `pair` now merges into its voice: one waits to start, or
-// sounds since at most its merge window (and not its whole length).
+// sounds and still takes events in: an impact voice for the merge window after its start (and not its
+// whole length), a particle hits voice while this step still fits, whole, in its merge time (MergeWindow)
+// with the steps it took in (a step's hits came over all of its dt; none is cut or lost).
 bool SoundVoices::Merges(const Pair& pair) const
 {
+    if (pair.pending > 0.0f)
+    {
+        return true;
+    }
+    if (pair.voice.id == 0)
+    {
+        return false;
+    }
+    if (pair.kind == VoiceKind::particleHits)
+    {
+        return pair.mergedTime + m_dt <= MergeWindow(pair) + kTimeSlop;
+    }
     const double age = m_time - pair.voice.startTime;
-    return pair.pending > 0.0f || (pair.voice.id != 0 && age <= m_mergeWindow &&
-                                   age < static_cast<double>(SoundOf(pair).impactLength));
+    return age <= m_mergeWindow && age < static_cast<double>(SoundOf(pair).impactLength);
 }
 
-// An impact or particle hits event of `pair` at `loudness`: merged into the voice it starts or sounds within
-// the merge window, dropped inside the cooldown or when silent, else waiting to start a voice.
-void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event)
+// An impact or particle hits event of `pair` at `loudness`: merged into the voice it starts or sounds when
+// `merges` (Merges, asked before the event changed the pair), dropped inside the cooldown or when silent,
+// else waiting to start a voice.
+void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event, bool merges)
 {
     const bool impact = pair.kind == VoiceKind::impact;
     const bool sounding = pair.voice.id != 0;
-    if (Merges(pair))
+    if (merges)
     {
         ++(impact ? m_stats.impactsMerged : m_stats.particleHitsMerged);
         if (sounding)
@@ -278,23 +296,18 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
         if (event.particleType.index < m_hitSounds.size() && event.body != nullptr && event.count > 0)
         {
             // The hits merging into one voice count together, whatever steps they came in: a rain of hits
-            // sounds as loud at any step rate (more steps a window, fewer hits a step). A step's hits came
-            // over its dt; those of a step that reaches past the window count for the part within it. The
-            // first step's count whole (a lone hit sounds alike at any rate).
+            // sounds about as loud at any step rate (more steps, fewer hits a step). An event in the step
+            // that made the voice wait to start adds no time.
             Pair& pair = FindOrAdd(VoiceKind::particleHits, event);
             const bool merges = Merges(pair);
-            const double age = pair.voice.id != 0 ? m_time - pair.voice.startTime : 0.0;
-            const float weight =
-                merges ? std::clamp(static_cast<float>((MergeWindow(pair) - age) / static_cast<double>(dt)),
-                                    0.0f, 1.0f)
-                       : 1.0f;
-            const float hits = weight * static_cast<float>(event.count);
+            const float hits = static_cast<float>(event.count);
             pair.mergedHits = (merges ? pair.mergedHits : 0.0f) + hits;
             pair.mergedSpeedSum = (merges ? pair.mergedSpeedSum : 0.0f) + event.approachSpeed * hits;
+            pair.mergedTime = (merges ? pair.mergedTime : 0.0) + (merges && pair.pending > 0.0f ? 0.0 : m_dt);
             Hit(pair,
                 ParticleHitLoudness(m_hitSounds[event.particleType.index], pair.mergedSpeedSum,
                                     pair.mergedHits),
-                event);
+                event, merges);
         }
         return;
     }
@@ -327,8 +340,11 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
         }
         break;
     case EffectEventType::impact:
-        Hit(FindOrAdd(VoiceKind::impact, event), ImpactLoudness(rule, event), event);
-        break;
+    {
+        Pair& pair = FindOrAdd(VoiceKind::impact, event);
+        Hit(pair, ImpactLoudness(rule, event), event, Merges(pair));
+    }
+    break;
     case EffectEventType::particleHits:
         break; // handled above
     }
@@ -469,6 +485,7 @@ void SoundVoices::Step(std::span<const EffectEvent> events, float dt)
 {
     detail::CheckStepTime(dt); // before anything changes: a NaN time would stay in every later voice
     m_time += static_cast<double>(dt);
+    m_dt = static_cast<double>(dt);
     m_changes.clear();
     m_claims.clear();
     m_hitsThisStep = 0;
