@@ -68,7 +68,7 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     SurfaceResponse response;
     response.velocity = surfaceVelocity;
     response.restitution = side.restitution > material.restitution ? side.restitution : material.restitution;
-    response.friction = std::sqrt(side.friction * material.friction);
+    response.friction = MixFriction(side.friction, material.friction);
     response.restSpeed = side.restSpeed < material.restSpeed ? side.restSpeed : material.restSpeed;
     return response;
 }

@@ -132,13 +132,19 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             }
             // Then the disc slides: the rest of its motion relative to the body, less its part into the
             // surface, ends in the body's frame at the end of the step; out of the shape if a curve or a
-            // corner still puts it inside.
+            // corner still puts it inside. The slide loses Coulomb friction times the part into the
+            // surface, never reversing (as the velocity does, Respond): a particle resting on a sloped
+            // body holds where the friction holds it, instead of creeping down by the step's gravity.
             b2Vec2 normal = local.normal;
             b2Vec2 rest = b2MulT(body.after, end) - local.position;
             const float into = b2Dot(rest, normal);
             if (into < 0.0f)
             {
                 rest -= into * normal;
+                const float slide = rest.Length();
+                const float held =
+                    MixFriction(side.friction, m_movingMaterials[moving.material].friction) * -into;
+                rest *= slide > held ? (slide - held) / slide : 0.0f;
             }
             b2Vec2 final = local.position + rest;
             Touch out;

@@ -56,6 +56,12 @@ struct SurfaceMaterial
 };
 
 /// A particle type's side of a touch.
+/// Box2D's friction mix (b2MixFriction): the square root of the product.
+inline float MixFriction(float a, float b)
+{
+    return std::sqrt(a * b);
+}
+
 struct ParticleSide
 {
     float radius;
