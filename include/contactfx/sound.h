@@ -189,7 +189,7 @@ private:
     Pair& FindOrAdd(VoiceKind kind, const EffectEvent& event);
     const SoundRuleDef& SoundOf(const Pair& pair) const;
     double MergeWindow(const Pair& pair) const;
-    bool Merges(const Pair& pair) const;
+    bool Merges(const Pair& pair, float dt) const;
     void Hit(Pair& pair, float loudness, const EffectEvent& event, bool merges);
     Pair* FindScrape(std::uint32_t scrapeId);
     void OnEvent(const EffectEvent& event, float dt);
@@ -207,7 +207,6 @@ private:
     std::vector<SoundVoice> m_voices;
     std::vector<VoiceChange> m_changes;
     double m_time = 0.0;
-    double m_dt = 0.0; ///< s, of the step being taken
     std::uint32_t m_nextId = 1;
     std::uint32_t m_hitsThisStep = 0; ///< particle hits events read so far in this Step
     SoundStats m_stats;

@@ -156,11 +156,11 @@ private:
         const float high = static_cast<float>(last);
         return static_cast<int>(low < high ? low : high);
     }
-    // Entries a build with the current cells would list.
     /// With `touches` (the static geometry): room for a build of these boxes in the current cells wherever
     /// they sit relative to them, so that rebuilding as many primitives after the origin shifted (they line
     /// up with the cells differently) allocates nothing.
     void ReserveForAnyAlignment(std::span<const b2AABB> boxes);
+    // Entries a build with the current cells would list.
     std::size_t CountItems(std::span<const b2AABB> boxes) const;
 
     b2Vec2 m_lower{0.0f, 0.0f};

@@ -141,10 +141,9 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             if (into < 0.0f)
             {
                 rest -= into * normal;
-                const float slide = rest.Length();
-                const float held =
-                    MixFriction(side.friction, m_movingMaterials[moving.material].friction) * -into;
-                rest *= slide > held ? (slide - held) / slide : 0.0f;
+                rest *= SlideLeft(rest.Length(),
+                                  MixFriction(side.friction, m_movingMaterials[moving.material].friction) *
+                                      -into);
             }
             b2Vec2 final = local.position + rest;
             Touch out;

@@ -269,8 +269,8 @@ b2Vec2 Respond(b2Vec2 velocity, float touchSpeed, b2Vec2 normal, const SurfaceRe
     const float bounce = touchSpeed > surface.restSpeed ? surface.restitution * touchSpeed : 0.0f;
     const float normalChange = bounce - approach; // > 0
     const float slide = tangential.Length();
-    const float slideAfter = std::max(0.0f, slide - surface.friction * normalChange);
-    const b2Vec2 tangentialAfter = slide > 0.0f ? (slideAfter / slide) * tangential : b2Vec2(0.0f, 0.0f);
+    const b2Vec2 tangentialAfter =
+        slide > 0.0f ? SlideLeft(slide, surface.friction * normalChange) * tangential : b2Vec2(0.0f, 0.0f);
     return surface.velocity + tangentialAfter + bounce * normal;
 }
 

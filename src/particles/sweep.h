@@ -67,6 +67,13 @@ struct SurfaceResponse
     float restSpeed = 0.0f;      ///< below this approach speed (m/s) nothing bounces
 };
 
+/// Coulomb friction on a slide of length `slide` (>= 0; m, or m/s) that takes up to `held` (>= 0) of it,
+/// never reversing it: the part of the slide that is left, 0..1.
+inline float SlideLeft(float slide, float held)
+{
+    return slide > held ? (slide - held) / slide : 0.0f;
+}
+
 /// The velocity after touching. `velocity` is the step's (all of its gravity); `touchSpeed` (m/s) is the
 /// speed at which the particle approached the surface at the moment of the touch, before the gravity of
 /// the rest of the step (see TouchApproachSpeed). Relative to the surface, the approaching normal part is

@@ -55,13 +55,13 @@ struct SurfaceMaterial
     const b2Body* body = nullptr;
 };
 
-/// A particle type's side of a touch.
 /// Box2D's friction mix (b2MixFriction): the square root of the product.
 inline float MixFriction(float a, float b)
 {
     return std::sqrt(a * b);
 }
 
+/// A particle type's side of a touch.
 struct ParticleSide
 {
     float radius;

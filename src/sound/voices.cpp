@@ -219,11 +219,11 @@ double SoundVoices::MergeWindow(const Pair& pair) const
     return std::min(static_cast<double>(m_mergeWindow), static_cast<double>(SoundOf(pair).impactLength));
 }
 
-// Whether an impact or particle hits event of `pair` now merges into its voice: one waits to start, or
-// sounds and still takes events in: an impact voice for the merge window after its start (and not its
-// whole length), a particle hits voice while this step still fits, whole, in its merge time (MergeWindow)
-// with the steps it took in (a step's hits came over all of its dt; none is cut or lost).
-bool SoundVoices::Merges(const Pair& pair) const
+// Whether an impact or particle hits event of `pair` in a step of `dt` (s) merges into its voice: one waits
+// to start, or sounds and still takes events in: an impact voice for the merge window after its start (and
+// not its whole length), a particle hits voice while this step still fits, whole, in its merge time
+// (MergeWindow) with the steps it took in (a step's hits came over all of its dt; none is cut or lost).
+bool SoundVoices::Merges(const Pair& pair, float dt) const
 {
     if (pair.pending > 0.0f)
     {
@@ -235,7 +235,7 @@ bool SoundVoices::Merges(const Pair& pair) const
     }
     if (pair.kind == VoiceKind::particleHits)
     {
-        return pair.mergedTime + m_dt <= MergeWindow(pair) + kTimeSlop;
+        return pair.mergedTime + static_cast<double>(dt) <= MergeWindow(pair) + kTimeSlop;
     }
     const double age = m_time - pair.voice.startTime;
     return age <= m_mergeWindow && age < static_cast<double>(SoundOf(pair).impactLength);
@@ -299,11 +299,12 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
             // sounds about as loud at any step rate (more steps, fewer hits a step). An event in the step
             // that made the voice wait to start adds no time.
             Pair& pair = FindOrAdd(VoiceKind::particleHits, event);
-            const bool merges = Merges(pair);
+            const bool merges = Merges(pair, dt);
             const float hits = static_cast<float>(event.count);
             pair.mergedHits = (merges ? pair.mergedHits : 0.0f) + hits;
             pair.mergedSpeedSum = (merges ? pair.mergedSpeedSum : 0.0f) + event.approachSpeed * hits;
-            pair.mergedTime = (merges ? pair.mergedTime : 0.0) + (merges && pair.pending > 0.0f ? 0.0 : m_dt);
+            pair.mergedTime = (merges ? pair.mergedTime : 0.0) +
+                              (merges && pair.pending > 0.0f ? 0.0 : static_cast<double>(dt));
             Hit(pair,
                 ParticleHitLoudness(m_hitSounds[event.particleType.index], pair.mergedSpeedSum,
                                     pair.mergedHits),
@@ -342,9 +343,9 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
     case EffectEventType::impact:
     {
         Pair& pair = FindOrAdd(VoiceKind::impact, event);
-        Hit(pair, ImpactLoudness(rule, event), event, Merges(pair));
+        Hit(pair, ImpactLoudness(rule, event), event, Merges(pair, dt));
+        break;
     }
-    break;
     case EffectEventType::particleHits:
         break; // handled above
     }
@@ -485,7 +486,6 @@ void SoundVoices::Step(std::span<const EffectEvent> events, float dt)
 {
     detail::CheckStepTime(dt); // before anything changes: a NaN time would stay in every later voice
     m_time += static_cast<double>(dt);
-    m_dt = static_cast<double>(dt);
     m_changes.clear();
     m_claims.clear();
     m_hitsThisStep = 0;

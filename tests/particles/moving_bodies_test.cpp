@@ -284,12 +284,6 @@ INSTANTIATE_TEST_SUITE_P(Particles, MovingBodies,
                                             ::testing::Values(30, 60, 120, 240)),
                          CaseName);
 
-} // namespace
-} // namespace cfx::test
-
-namespace cfx::test
-{
-
 // How far (m) particles laid on a 20-degree kinematic box of friction `friction` moved along it, in its own
 // frame, over 2 s at `hz` with a hitch of `hitch` s in the middle (0: none), the box moving at `velocity`.
 float CreepOnASlopedBody(float friction, float hz, float hitch, b2Vec2 velocity)
@@ -352,4 +346,5 @@ TEST(MovingBodiesSliding, ParticlesHoldOnASlopedBodyWhereFrictionHoldsThem)
     }
 }
 
+} // namespace
 } // namespace cfx::test

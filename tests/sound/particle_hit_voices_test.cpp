@@ -38,6 +38,28 @@ std::uint16_t TypeNamed(const EffectsConfig& config, const char* name)
     return config.FindParticleType(name).index;
 }
 
+// The loudest a rain of 480 hits a second at 2 m/s on one body gets over 1 s, stepped at `dts` in turn.
+float RainPeak(const EventBench& bench, std::uint16_t type, std::initializer_list<float> dts)
+{
+    SoundVoices rain(bench.config);
+    float peak = 0.0f;
+    for (float time = 0.0f; time < 1.0f;)
+    {
+        for (const float dt : dts)
+        {
+            const EffectEvent hits =
+                Hits(bench, 0, type, static_cast<std::uint32_t>(std::lround(480.0f * dt)), 2.0f);
+            rain.Step(std::span(&hits, 1), dt);
+            for (const SoundVoice& voice : rain.Voices())
+            {
+                peak = std::max(peak, voice.peak);
+            }
+            time += dt;
+        }
+    }
+    return peak;
+}
+
 } // namespace
 
 TEST(ParticleHitVoices, LoudnessFollowsCountAndMeanSpeedAndTheVoiceDecaysOverItsLength)
@@ -111,28 +133,6 @@ TEST(ParticleHitVoices, AreOnePerTypeAndBodyAndMergeWithinTheWindow)
     }
     voices.Step(std::span(&first[0], 1), kDt);
     EXPECT_EQ(voices.Stats().particleHitVoices, 4u);
-}
-
-// The loudest a rain of 480 hits a second at 2 m/s on one body gets over 1 s, stepped at `dts` in turn.
-float RainPeak(const EventBench& bench, std::uint16_t type, std::initializer_list<float> dts)
-{
-    SoundVoices rain(bench.config);
-    float peak = 0.0f;
-    for (float time = 0.0f; time < 1.0f;)
-    {
-        for (const float dt : dts)
-        {
-            const EffectEvent hits =
-                Hits(bench, 0, type, static_cast<std::uint32_t>(std::lround(480.0f * dt)), 2.0f);
-            rain.Step(std::span(&hits, 1), dt);
-            for (const SoundVoice& voice : rain.Voices())
-            {
-                peak = std::max(peak, voice.peak);
-            }
-            time += dt;
-        }
-    }
-    return peak;
 }
 
 // A trial's rain of dirt at about 500 hits a second summed to a third less loudness at 240 Hz than at 30 Hz:
