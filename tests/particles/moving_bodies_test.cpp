@@ -285,19 +285,22 @@ INSTANTIATE_TEST_SUITE_P(Particles, MovingBodies,
                          CaseName);
 
 // How far (m) particles laid on a 20-degree kinematic box of friction `friction` moved along it, in its own
-// frame, over 2 s at `hz` with a hitch of `hitch` s in the middle (0: none), the box moving at `velocity`.
-float CreepOnASlopedBody(float friction, float hz, float hitch, b2Vec2 velocity)
+// frame, over 2 s at `hz` with a hitch of `hitch` s in the middle (0: none), the box moving at `velocity` and
+// turning at `spin` (rad/s) about its centre.
+float CreepOnASlopedBody(float friction, float hz, float hitch, b2Vec2 velocity, float spin = 0.0f)
 {
     constexpr float kSlope = 0.349066f; // 20 degrees: tan = 0.364
     Pool scene({Ball(0.0f, friction)});
     b2Body* slope = scene.CreateBox(b2Vec2(0.0f, 0.0f), 3.0f, 0.5f, friction, b2_kinematicBody);
     slope->SetTransform(b2Vec2(0.0f, 0.0f), kSlope);
     slope->SetLinearVelocity(velocity);
+    slope->SetAngularVelocity(spin);
     const float radius = scene.types[0].radius;
     for (int i = 0; i < 10; ++i)
     {
-        scene.Add(b2Mul(slope->GetTransform(), b2Vec2(-2.0f + 0.4f * static_cast<float>(i), 0.5f + radius)),
-                  velocity); // moving with the box
+        const b2Vec2 at =
+            b2Mul(slope->GetTransform(), b2Vec2(-2.0f + 0.4f * static_cast<float>(i), 0.5f + radius));
+        scene.Add(at, velocity + b2Cross(spin, at)); // moving with the box
     }
     const float dt = 1.0f / hz;
     const auto step = [&](float time)
@@ -328,7 +331,7 @@ float CreepOnASlopedBody(float friction, float hz, float hitch, b2Vec2 velocity)
 // A re-check laid particles on a 20-degree kinematic box with friction 1, which should hold them: they crept
 // down it by g dt^2 sin(20 degrees) a step (0.23 m in 2 s at 30 Hz, 0.21 m over a 0.25 s hitch), since the
 // friction acted on their velocity but not on their slide within the step. It acts on both now, as on static
-// slopes; with too little friction (0.2 < tan 20 degrees) they still slide.
+// slopes, standing, moving or turning; with too little friction (0.2 < tan 20 degrees) they still slide.
 TEST(MovingBodiesSliding, ParticlesHoldOnASlopedBodyWhereFrictionHoldsThem)
 {
     for (const float hz : {30.0f, 60.0f, 240.0f})
@@ -342,6 +345,10 @@ TEST(MovingBodiesSliding, ParticlesHoldOnASlopedBodyWhereFrictionHoldsThem)
                 EXPECT_LT(CreepOnASlopedBody(1.0f, hz, hitch, velocity), 1.0e-3f);
                 EXPECT_GT(CreepOnASlopedBody(0.2f, hz, hitch, velocity), 0.1f) << "too little friction";
             }
+            // Turning slowly (the slope steepens from 20 to 26 degrees in 2 s; a re-check's plate turning at
+            // 0.05 rad/s let them slide 2 m over a 1 s hitch).
+            SCOPED_TRACE(testing::Message() << hz << " Hz, hitch " << hitch << " s, turning at 0.05 rad/s");
+            EXPECT_LT(CreepOnASlopedBody(1.0f, hz, hitch, b2Vec2(0.0f, 0.0f), 0.05f), 1.0e-3f);
         }
     }
 }
