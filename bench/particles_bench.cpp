@@ -18,15 +18,19 @@
 // ChainGround/N/0 and ChainGround/N/1: 20 steel boxes dragged at 6 m/s along a static ground of N vertices
 // 0.2 m apart, as one chain (0) or as N - 1 edge fixtures (1); each iteration is one Effects::Step (the world
 // step is not timed). The same ground either way: the time should not grow with N for a chain.
+//
+// FarFixture/D: particles raining on a finely split chain, with one static box D m away (see below).
 #include "particles/world_geometry.h"
 #include "scenes/debris_bench.h"
 #include "scenes/particle_bench.h"
+#include "scenes/split_mix.h"
 
 #include <benchmark/benchmark.h>
 #include <box2d/box2d.h>
 #include <chrono>
 #include <cmath>
 #include <contactfx/effects.h>
+#include <contactfx/particle_system.h>
 #include <contactfx/presets.h>
 #include <vector>
 
@@ -224,6 +228,67 @@ void ChainGround(benchmark::State& state)
     state.counters["live"] = fx.Stats().live;
 }
 
+// FarFixture/D: 5,000 pool particles (1 cm, bouncing) raining on a static chain of 2,000 segments of 5 cm
+// (100 m), 100 new ones a step, with one more static box D m away (0: none); each iteration is one
+// particle step (with the 100 spawns) on one thread. The time should not grow with D.
+void FarFixture(benchmark::State& state)
+{
+    const auto farAway = static_cast<float>(state.range(0));
+    b2World world(b2Vec2(0.0f, -10.0f));
+    b2BodyDef groundDef;
+    b2Body* ground = world.CreateBody(&groundDef);
+    std::vector<b2Vec2> points;
+    for (int i = 0; i <= 2000; ++i)
+    {
+        points.emplace_back(50.0f - 0.05f * static_cast<float>(i), 0.0f); // right to left: front up
+    }
+    b2ChainShape chain;
+    chain.CreateChain(points.data(), static_cast<int>(points.size()), points.front(), points.back());
+    ground->CreateFixture(&chain, 0.0f);
+    if (farAway > 0.0f)
+    {
+        b2PolygonShape box;
+        box.SetAsBox(1.0f, 1.0f, b2Vec2(farAway, 0.0f), 0.0f);
+        ground->CreateFixture(&box, 0.0f);
+    }
+    cfx::ParticleTypeDef type;
+    type.name = "ball";
+    type.radius = 0.01f;
+    type.restitution = 0.3f;
+    type.friction = 0.5f;
+    type.lifetime = 3600.0f;
+    constexpr std::uint32_t kCount = 5000;
+    const cfx::ParticleTypeDef types[] = {type};
+    cfx::ParticleBudget budget;
+    budget.capacity = kCount;
+    cfx::ParticleSystemOptions options;
+    options.threads = 1;
+    cfx::ParticleSystem particles(world, types, budget, options);
+    cfx::bench::SplitMix64 random(11);
+    // A rain: 100 new particles a step over the chain, the oldest recycled.
+    const auto step = [&]
+    {
+        for (int i = 0; i < 100; ++i)
+        {
+            cfx::ParticleSpawn spawn;
+            spawn.position = b2Vec2(random.Uniform(-49.0f, 49.0f), random.Uniform(0.5f, 3.0f));
+            spawn.velocity = b2Vec2(random.Uniform(-1.0f, 1.0f), random.Uniform(-2.0f, 0.0f));
+            spawn.type = cfx::ParticleTypeId{0};
+            particles.Spawn(spawn);
+        }
+        particles.Step(1.0f / 60.0f, world.GetGravity());
+    };
+    for (int i = 0; i < 120; ++i)
+    {
+        step();
+    }
+    for (auto _ : state)
+    {
+        step();
+    }
+    state.counters["live"] = particles.Count();
+}
+
 } // namespace
 
 BENCHMARK(StaticScan);
@@ -243,5 +308,7 @@ BENCHMARK(ChainGround)
     ->ArgsProduct({{1000, 20000}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(300); // 5 s: the boxes stay on the shortest ground
+
+BENCHMARK(FarFixture)->Arg(0)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -529,15 +529,16 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.leaving = leaving.LengthSquared() > 0.0f ? leaving : slip;
     query.otherBody = other.GetBody();
     query.radius = type.radius;
+    const Solids solids{&context.particleBodies, type.categoryBits, type.maskBits};
     SpawnPoint start;
     if (rule.placement == SpawnPlacement::tutorialDrop) // looks 1 m each way, as documented
     {
-        start = FindTutorialDropPoint(context.world, query, &context.particleBodies);
+        start = FindTutorialDropPoint(context.world, query, solids);
     }
     else
     {
         query.searchDistance = SearchDistance(*other.GetBody());
-        start = FindSpawnPoint(context.world, query, &context.particleBodies);
+        start = FindSpawnPoint(context.world, query, solids);
     }
     if (!start.outside)
     {
@@ -546,8 +547,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         return;
     }
     // The audit: Box2D's own overlap test on the particle's actual disc, not the placement's search.
-    if (m_auditStarts &&
-        DiscOverlapsSolid(context.world, start.position, type.radius, &context.particleBodies))
+    if (m_auditStarts && DiscOverlapsSolid(context.world, start.position, type.radius, solids))
     {
         context.stats.spawnedInsideSolid += static_cast<std::uint64_t>(count);
     }

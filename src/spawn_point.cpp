@@ -23,11 +23,12 @@ namespace cfx
 namespace
 {
 
-// Whether the spawn tests (the placement's and the audit's) look at `fixture`: solid (not a sensor) and on
-// a body `ignore` does not ignore (null: none ignored).
-bool IsSolidFor(const b2Fixture& fixture, const BodyFilter* ignore)
+// Whether a start's disc test looks at `fixture`: one of `solids`, or a non-sensor fixture of `passable`
+// (the other body of the contact, null for none), whatever the particle's filter says: particles start
+// beside it, not inside it, where they would seem to come out of it.
+bool Looked(const Solids& solids, const b2Body* passable, const b2Fixture& fixture)
 {
-    return !fixture.IsSensor() && (ignore == nullptr || !ignore->Ignore(fixture.GetBody()));
+    return (fixture.GetBody() == passable && !fixture.IsSensor()) || solids.Include(fixture);
 }
 
 // Whether a disc is inside any solid fixture: it overlaps one (skins of polygons and edges included), or
@@ -39,8 +40,8 @@ class DiscQuery
 {
 public:
     /// `passable`: a body whose overlap is noted (overlapsPassable) but does not end the query; may be null.
-    DiscQuery(b2Vec2 center, float radius, const BodyFilter* ignore, const b2Body* passable = nullptr)
-        : m_ignore(ignore), m_passable(passable), m_center(center), m_radius(radius),
+    DiscQuery(b2Vec2 center, float radius, const Solids& solids, const b2Body* passable = nullptr)
+        : m_solids(solids), m_passable(passable), m_center(center), m_radius(radius),
           m_behindReach(radius + kBehindReach)
     {
         m_box.lowerBound = center - b2Vec2(radius, radius);
@@ -49,16 +50,18 @@ public:
         m_reachBox.upperBound = center + b2Vec2(m_behindReach, m_behindReach);
     }
 
-    /// One child of a fixture the query box meets (QueryChildren); false: the answer is known, stop.
-    bool operator()(const b2Fixture* fixture, int child)
+    /// One child of a fixture the query box meets, with its broad-phase box (QueryProxies); false: the
+    /// answer is known, stop.
+    bool operator()(const b2Fixture* fixture, int child, const b2AABB& fatBox)
     {
-        return !IsSolidFor(*fixture, m_ignore) || Solid(fixture, child);
+        return !Looked(m_solids, m_passable, *fixture) || Solid(fixture, child, fatBox);
     }
 
-    /// As operator(), for a child known to be solid (IsSolidFor, with this query's `ignore`).
-    bool Solid(const b2Fixture* fixture, int child)
+    /// As operator(), for a child known to be looked at (Looked, with this query's solids and passable body).
+    /// `box` holds the child: the broad phase's fattened box, which b2World::ShiftOrigin moves with the world
+    /// (the fixture's own GetAABB is not moved until its body next moves, never for a static one).
+    bool Solid(const b2Fixture* fixture, int child, const b2AABB& box)
     {
-        const b2AABB& box = fixture->GetAABB(child);
         if (!b2TestOverlap(box, m_reachBox))
         {
             return true;
@@ -277,7 +280,7 @@ private:
     static constexpr float kSame = 1e-6f; // m: the same distance, the same vertex
     static constexpr int kMaxNormals = 4;
 
-    const BodyFilter* m_ignore;
+    Solids m_solids;
     const b2Body* m_passable;
     b2Vec2 m_center;
     float m_radius;
@@ -333,14 +336,14 @@ bool ProjectOntoSurface(const SpawnQuery& query, b2Vec2 point, float reach, b2Ve
 class WayBlocked final : public b2RayCastCallback
 {
 public:
-    WayBlocked(const b2Fixture* surface, const b2Body* passable, const BodyFilter* ignore)
-        : m_surface(surface), m_passable(passable), m_ignore(ignore)
+    WayBlocked(const b2Fixture* surface, const b2Body* passable, const Solids& solids)
+        : m_surface(surface), m_passable(passable), m_solids(solids)
     {
     }
 
     float ReportFixture(b2Fixture* fixture, const b2Vec2&, const b2Vec2&, float) override
     {
-        if (fixture == m_surface || fixture->GetBody() == m_passable || !IsSolidFor(*fixture, m_ignore))
+        if (fixture == m_surface || fixture->GetBody() == m_passable || !m_solids.Include(*fixture))
         {
             return -1.0f; // ignore and go on
         }
@@ -353,7 +356,7 @@ public:
 private:
     const b2Fixture* m_surface;
     const b2Body* m_passable;
-    const BodyFilter* m_ignore;
+    Solids m_solids;
 };
 
 // Two surface normals this close (cosine; 0.8 degrees) are one face's: the way between starts on it is
@@ -400,22 +403,22 @@ template <class Attempt> SpawnPoint Walk(float firstSide, float step, float sear
     return found;
 }
 
-// The solid fixture children (IsSolidFor) near the starts of one walk, from few broad-phase queries: a
-// query covers a start's box grown by `grow` on each side (the next starts are a few steps away), and is
-// made again when a start's box leaves the box covered. A start's disc query visits the children whose
-// broad-phase box meets its own box, which are the solid children a query of the world with that box
-// reports, in the same order (QueryProxies): each start sees exactly what it would see asking the world.
-// Holds at most kCapacity children; when a query finds more, each start from then on asks the world.
-// Valid while the world's fixtures stay as they are (the walk only reads the world).
+// The fixture children a start's disc test looks at (Looked) near the starts of one walk, from few
+// broad-phase queries: a query covers a start's box grown by `grow` on each side (the next starts are a few
+// steps away), and is made again when a start's box leaves the box covered. A start's disc query visits the
+// children whose broad-phase box meets its own box, which are the children looked at that a query of the
+// world with that box reports, in the same order (QueryProxies): each start sees exactly what it would see
+// asking the world. Holds at most kCapacity children; when a query finds more, each start from then on asks
+// the world. Valid while the world's fixtures stay as they are (the walk only reads the world).
 class NearbyChildren
 {
 public:
-    NearbyChildren(const b2World& world, const BodyFilter* ignore, float grow)
-        : m_world(world), m_ignore(ignore), m_grow(grow)
+    NearbyChildren(const b2World& world, const Solids& solids, const b2Body* passable, float grow)
+        : m_world(world), m_solids(solids), m_passable(passable), m_grow(grow)
     {
     }
 
-    /// Visits the children `query` needs (its Box()), as detail::QueryChildren(world, query.Box(), query).
+    /// Visits the children `query` needs (its Box()), as detail::QueryProxies(world, query.Box(), query).
     void Visit(DiscQuery& query)
     {
         const b2AABB& box = query.Box();
@@ -425,13 +428,13 @@ public:
         }
         if (m_tooMany)
         {
-            detail::QueryChildren(m_world, box, query);
+            detail::QueryProxies(m_world, box, query);
             return;
         }
         for (int i = 0; i < m_count; ++i)
         {
             const Child& child = m_children[i];
-            if (b2TestOverlap(child.fatBox, box) && !query.Solid(child.fixture, child.index))
+            if (b2TestOverlap(child.fatBox, box) && !query.Solid(child.fixture, child.index, child.fatBox))
             {
                 return;
             }
@@ -463,7 +466,7 @@ private:
         detail::QueryProxies(m_world, m_covered,
                              [this](const b2Fixture* fixture, int child, const b2AABB& fatBox)
                              {
-                                 if (!IsSolidFor(*fixture, m_ignore))
+                                 if (!Looked(m_solids, m_passable, *fixture))
                                  {
                                      return true;
                                  }
@@ -478,7 +481,8 @@ private:
     }
 
     const b2World& m_world;
-    const BodyFilter* m_ignore;
+    Solids m_solids;
+    const b2Body* m_passable;
     float m_grow;
     // Covers no box until the first query (a box's lower bound is never above its upper).
     b2AABB m_covered{b2Vec2(b2_maxFloat, b2_maxFloat), b2Vec2(-b2_maxFloat, -b2_maxFloat)};
@@ -493,30 +497,30 @@ private:
 constexpr float kCoveredSteps = 16.0f;
 
 // Whether a start at `center` is clear, inside `passable` only, or closed (see Start).
-Start StartAt(NearbyChildren& nearby, b2Vec2 center, float radius, const BodyFilter* ignore,
+Start StartAt(NearbyChildren& nearby, b2Vec2 center, float radius, const Solids& solids,
               const b2Body* passable)
 {
-    DiscQuery query(center, radius, ignore, passable);
+    DiscQuery query(center, radius, solids, passable);
     nearby.Visit(query);
     return query.Closed() ? Start::closed : query.overlapsPassable ? Start::passable : Start::clear;
 }
 
 } // namespace
 
-bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
+bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const Solids& solids)
 {
-    DiscQuery query(center, radius, ignore);
-    detail::QueryChildren(world, query.Box(), query);
+    DiscQuery query(center, radius, solids);
+    detail::QueryProxies(world, query.Box(), query);
     return !query.Inside();
 }
 
-bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore)
+bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const Solids& solids)
 {
     static constexpr float kTouching = 1.0e-5f; // m
     class Overlaps
     {
     public:
-        Overlaps(b2Vec2 center, float radius, const BodyFilter* ignore) : m_ignore(ignore)
+        Overlaps(b2Vec2 center, float radius, const Solids& solids) : m_solids(solids)
         {
             // b2TestOverlap counts a distance under 10 * b2_epsilon (1.2e-6 m) as overlap: a disc just
             // touching a surface would be inside. Overlap means deeper than kTouching.
@@ -525,9 +529,10 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
             box.lowerBound = center - b2Vec2(radius, radius);
             box.upperBound = center + b2Vec2(radius, radius);
         }
-        bool operator()(const b2Fixture* fixture, int child)
+        bool operator()(const b2Fixture* fixture, int child, const b2AABB& fatBox)
         {
-            found = IsSolidFor(*fixture, m_ignore) && b2TestOverlap(fixture->GetAABB(child), box) &&
+            // The broad phase's box: b2World::ShiftOrigin moves it, not the fixture's own (GetAABB).
+            found = m_solids.Include(*fixture) && b2TestOverlap(fatBox, box) &&
                     b2TestOverlap(fixture->GetShape(), child, &m_disc, 0, fixture->GetBody()->GetTransform(),
                                   m_identity);
             return !found;
@@ -536,16 +541,16 @@ bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const 
         bool found = false;
 
     private:
-        const BodyFilter* m_ignore;
+        Solids m_solids;
         b2CircleShape m_disc;
         b2Transform m_identity{b2Vec2(0.0f, 0.0f), b2Rot(0.0f)};
     };
-    Overlaps query(center, radius, ignore);
-    detail::QueryChildren(world, query.box, query);
+    Overlaps query(center, radius, solids);
+    detail::QueryProxies(world, query.box, query);
     return query.found;
 }
 
-SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
+SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const Solids& solids)
 {
     b2Vec2 tangent(-query.normal.y, query.normal.x);
     const float firstSide = b2Dot(query.leaving, tangent) < 0.0f ? -1.0f : 1.0f;
@@ -560,7 +565,7 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
     // 0), then the last one tried.
     const b2Vec2 lifted = query.point + clearance * query.normal;
     SpawnPoint atContact{lifted, query.normal, false};
-    NearbyChildren nearby(world, ignore, kCoveredSteps * step);
+    NearbyChildren nearby(world, solids, query.otherBody, kCoveredSteps * step);
     SpawnPoint previous = atContact;
     float previousSide = 0.0f;
     SpawnPoint found = Walk(firstSide, step, query.searchDistance,
@@ -594,14 +599,14 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
                                 if (b2Dot(from.normal, start.normal) < kSameFace &&
                                     b2DistanceSquared(from.position, start.position) > 0.0f)
                                 {
-                                    WayBlocked way(query.surface, query.otherBody, ignore);
+                                    WayBlocked way(query.surface, query.otherBody, solids);
                                     world.RayCast(&way, from.position, start.position);
                                     if (way.blocked)
                                     {
                                         return Start::closed;
                                     }
                                 }
-                                return StartAt(nearby, start.position, query.radius, ignore, query.otherBody);
+                                return StartAt(nearby, start.position, query.radius, solids, query.otherBody);
                             });
     if (!found.outside)
     {
@@ -611,18 +616,18 @@ SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const B
     return found;
 }
 
-SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore)
+SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const Solids& solids)
 {
     // Along x, the side the particles leave to first, as FindSpawnPoint walks along the surface.
     const float firstSide = query.leaving.x < 0.0f ? -1.0f : 1.0f;
     const float step = std::max(query.radius + b2_polygonRadius + b2_linearSlop, 0.01f);
-    NearbyChildren nearby(world, ignore, kCoveredSteps * step);
+    NearbyChildren nearby(world, solids, query.otherBody, kCoveredSteps * step);
     SpawnPoint found =
         Walk(firstSide, step, query.searchDistance,
              [&](float offset, SpawnPoint& start)
              {
                  start = TutorialDropPoint(world, query.point + b2Vec2(offset, 0.0f));
-                 return start.outside ? StartAt(nearby, start.position, query.radius, ignore, query.otherBody)
+                 return start.outside ? StartAt(nearby, start.position, query.radius, solids, query.otherBody)
                                       : Start::passable; // nothing static below: look further
              });
     if (!found.outside)

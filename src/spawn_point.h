@@ -10,13 +10,15 @@
 // particle's disc is inside no solid fixture of the world. Circles, polygons, edges and chains all answer ray
 // casts, so one method serves every shape.
 //
-// Inside means: the disc overlaps a solid (non-sensor) fixture, skins included, or its centre is behind
-// the nearest one-sided edge or chain (they collide on their front only, so what is behind them is in
-// the solid they bound). When no start near the contact is outside (piles, crevices), the search says so
-// and the particle is not spawned: a particle never starts inside.
+// Inside means: the disc overlaps a solid fixture (Solids: not a sensor, and one the particle collides
+// with), skins included, or its centre is behind the nearest one-sided edge or chain (they collide on their
+// front only, so what is behind them is in the solid they bound). When no start near the contact is outside
+// (piles, crevices), the search says so and the particle is not spawned: a particle never starts inside.
 #pragma once
 
+#include <box2d/b2_fixture.h>
 #include <box2d/b2_math.h>
+#include <cstdint>
 
 class b2World;
 class b2Fixture;
@@ -30,6 +32,25 @@ struct BodyFilter
 {
     virtual ~BodyFilter() = default;
     virtual bool Ignore(const b2Body* body) const = 0;
+};
+
+/// The fixtures a particle's start must keep out of: not sensors, on a body `ignore` does not ignore (null:
+/// none ignored), and that the particle collides with by its collision filter (ParticleTypeDef's
+/// categoryBits and maskBits, as for a fixture of group 0: decoration filtered to meet no particle does not
+/// close a start).
+struct Solids
+{
+    const BodyFilter* ignore = nullptr;
+    std::uint16_t categoryBits = 0xFFFF; ///< the particle's (default: every fixture that collides at all)
+    std::uint16_t maskBits = 0xFFFF;
+
+    bool Include(const b2Fixture& fixture) const
+    {
+        const b2Filter& filter = fixture.GetFilterData();
+        return !fixture.IsSensor() && (filter.maskBits & categoryBits) != 0 &&
+               (filter.categoryBits & maskBits) != 0 &&
+               (ignore == nullptr || !ignore->Ignore(fixture.GetBody()));
+    }
 };
 
 /// One contact side as seen from the surface the particle should start on.
@@ -58,8 +79,8 @@ struct SpawnPoint
 };
 
 /// A start near the contact outside every solid (see the file comment), `outside` false when none within
-/// query.searchDistance along the surface. `ignore` may be null.
-SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);
+/// query.searchDistance along the surface.
+SpawnPoint FindSpawnPoint(const b2World& world, const SpawnQuery& query, const Solids& solids);
 
 /// The tutorial's placement: (x, y of the highest static fixture under x, plus 0.05 m), from a ray
 /// cast from (x, 1000) down to (x, -1000). `outside` is false when nothing static is under x (the
@@ -71,18 +92,18 @@ SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point);
 /// first, by growing steps up to query.searchDistance each way. The tutorial's own drop lands
 /// inside the wheel or the car's body that stands on the contact (its particles do not collide with
 /// them); this one lands beside it. `outside` false when no clear drop was found.
-SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const BodyFilter* ignore);
+SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const Solids& solids);
 
-/// Whether a disc is inside no solid fixture of a body `ignore` does not ignore: it overlaps none (polygon
+/// Whether a disc is inside none of `solids`: it overlaps none (polygon
 /// and edge skins, b2_polygonRadius, included) and its centre is not behind the nearest one-sided edge or
-/// chain within 0.1 m of the disc. `ignore` may be null.
-bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
+/// chain within 0.1 m of the disc.
+bool DiscIsClear(const b2World& world, b2Vec2 center, float radius, const Solids& solids);
 
-/// An audit of a start, independent of DiscIsClear: whether the disc overlaps a solid (non-sensor)
-/// fixture of a body `ignore` does not ignore by more than 10 micrometres, by Box2D's own overlap test
+/// An audit of a start, independent of DiscIsClear: whether the disc overlaps one of `solids` by more
+/// than 10 micrometres, by Box2D's own overlap test
 /// (b2TestOverlap, skins included, of the disc made 1e-5 m smaller: b2TestOverlap alone calls a disc within
 /// 1.2e-6 m of a surface overlapping), each child of each fixture whose box the disc's box meets. Being
-/// behind a one-sided edge or chain is not looked at (Box2D has no test for it). `ignore` may be null.
-bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const BodyFilter* ignore);
+/// behind a one-sided edge or chain is not looked at (Box2D has no test for it).
+bool DiscOverlapsSolid(const b2World& world, b2Vec2 center, float radius, const Solids& solids);
 
 } // namespace cfx

@@ -115,11 +115,18 @@ void CheckRunOptions(const RunOptions& options)
     // The run makes round(seconds * hz) steps: less than half a step would be none at all.
     if (std::llround(options.seconds * options.hz) < 1)
     {
+        // The least --seconds that makes a step, as the check computes it: 0.5 / hz itself can round
+        // to just under half a step (--hz 103).
+        double least = 0.5 / options.hz;
+        while (std::llround(least * options.hz) < 1)
+        {
+            least = std::nextafter(least, 1.0);
+        }
         throw InputError(kCommandLine, "--seconds",
                          NumberText(options.seconds) + " s at --hz " + NumberText(options.hz) +
                              " is less than half a step (" + NumberText(0.5 / options.hz) +
-                             " s), so nothing would be simulated: give --seconds " +
-                             NumberText(0.5 / options.hz) + " or more, or a higher --hz");
+                             " s), so nothing would be simulated: give --seconds " + NumberText(least) +
+                             " or more, or a higher --hz");
     }
 }
 

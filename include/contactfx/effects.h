@@ -116,8 +116,10 @@ public:
 
     /// Call right after b2World::ShiftOrigin(newOrigin), with the same vector (m): the particles (pool
     /// ones; body-backed ones move with their bodies) and the points the scrapes going on last reported
-    /// move by -newOrigin with the world. Events already delivered keep their points. Throws InputError
-    /// (file "<api>", field "newOrigin") when it is not finite; nothing changes then.
+    /// move by -newOrigin with the world. Events already delivered keep their points. The pair may come
+    /// anywhere between steps, also between b2World::Step and Step: the particles then start where they
+    /// would have with the shift before the world step. Throws InputError (file "<api>", field
+    /// "newOrigin") when it is not finite; nothing changes then.
     void ShiftOrigin(b2Vec2 newOrigin);
 
     /// Whether `body` is the Box2D body of one of this object's body-backed particles (ParticleBackend::

@@ -271,6 +271,23 @@ TEST(CliRun, SecondsThatMakeNoStepAreRefused)
         RunCli("run --scene grinder --hz 1 --seconds 0.5 --stats " + (dir / "one.json").string());
     ASSERT_EQ(one.exitCode, 0) << one.output;
     EXPECT_EQ(nlohmann::json::parse(FileText(dir / "one.json"))["steps"], 1);
+
+    // The --seconds the refusal suggests is taken: at --hz 103 half a step, 0.5 / 103, times 103 rounds
+    // to just under a half in doubles, and a trial's suggestion was itself refused.
+    for (const char* hz : {"103", "107", "239"})
+    {
+        SCOPED_TRACE(hz);
+        const CliResult refused = RunCli(std::string("run --scene grinder --seconds 1e-9 --hz ") + hz);
+        ASSERT_NE(refused.exitCode, 0);
+        const std::string::size_type at = refused.output.find("give --seconds ");
+        ASSERT_NE(at, std::string::npos) << refused.output;
+        const std::string suggested =
+            refused.output.substr(at + 15, refused.output.find(' ', at + 15) - (at + 15));
+        const CliResult taken = RunCli("run --scene grinder --seconds " + suggested + " --hz " + hz +
+                                       " --stats " + (dir / "least.json").string());
+        ASSERT_EQ(taken.exitCode, 0) << taken.output;
+        EXPECT_EQ(nlohmann::json::parse(FileText(dir / "least.json"))["steps"], 1);
+    }
 }
 
 // The summary names the rate the run stepped at, as given (it printed 59.94 as 60).
