@@ -12,6 +12,13 @@
 // this point" from a single cell: the cell's list holds every item within a cell's width of any point in
 // it, with no item met twice and nothing to merge.
 //
+// A grid stores its cells' lists in one of two ways. Dense: an array over every cell of the bounds, one
+// load per cell visited; its cells must grow when the bounds are large for the items, so geometry spread
+// thinly over kilometres (a level with one fixture far away) gets cells listing many items each. Hashed:
+// only the cells that list something, in an open-addressed table, one hash and (nearly always) one probe
+// per cell visited; its cell size follows the items whatever their bounds. The static geometry, built
+// rarely and spread as levels are, is hashed; the moving bodies, rebuilt every step, are dense.
+//
 // Build allocates only when the grid needs more room than any earlier build; Query and Around are const
 // and safe from any number of threads at once.
 #pragma once
@@ -36,23 +43,35 @@ public:
         neighbourhood ///< also in the cells next to those (their 3 x 3 blocks)
     };
 
+    /// How the cells' lists are stored (see the top of this file).
+    enum class Storage : std::uint8_t
+    {
+        dense,    ///< every cell of the bounds
+        hashed,   ///< only the cells that list something
+        automatic ///< dense, unless its cells would be more than 8 times as large as the boxes call for
+    };
+
     /// Whether item `item` (whose box overlaps `region`) comes into `region` itself: lets a grid of
     /// large shapes that fill little of their boxes (a long rotated ramp) list each only in the cells it
     /// really comes near. Must be true whenever the item overlaps `region` (false only when it cannot).
     using Touches = bool (*)(const void* context, std::uint32_t item, const b2AABB& region);
 
     /// Lists every box as `listing` says. The cell size follows the boxes' median extent, grown until
-    /// there are at most max(1024, 16 * boxes) cells and, when `maxItemsPerBox` > 0, at most that many
-    /// list entries per box on average (times the 3 x 3 block for a neighbourhood listing). With
-    /// `maxItemsPerBox` > 0 a build allocates only when it has more boxes than any earlier one, however
-    /// the boxes are spread (for the moving bodies, which spread out and fall out of the world).
+    /// there are at most max(1024, 16 * boxes) cells (hashed: entries, counted as the cells the boxes
+    /// overlap, at most 9 times that for a neighbourhood listing, and at most 2^24 columns and rows) and,
+    /// when `maxItemsPerBox` > 0, at most that many list entries per box on average (times the 3 x 3 block
+    /// for a neighbourhood listing). With `maxItemsPerBox` > 0 a build allocates only when it has more
+    /// boxes than any earlier one, however the boxes are spread (for the moving bodies, which spread out
+    /// and fall out of the world).
     ///
     /// With `touches`, a cell lists an item only when the item comes into the region the cell's list
     /// covers (the cell, or its 3 x 3 block for a neighbourhood listing), and the cells are no larger than
     /// 1,024 of them over the bounds would be: few large shapes then get cells about as fine as many
-    /// small ones, each cell listing only what is near it.
+    /// small ones, each cell listing only what is near it. A build with `touches` also keeps room for as
+    /// many boxes of the same extents placed anywhere on the cells (see ReserveForAnyAlignment).
     void Build(std::span<const b2AABB> boxes, Listing listing = Listing::overlapped,
-               std::size_t maxItemsPerBox = 0, Touches touches = nullptr, const void* context = nullptr);
+               std::size_t maxItemsPerBox = 0, Touches touches = nullptr, const void* context = nullptr,
+               Storage storage = Storage::dense);
 
     /// Calls visit(item) for every item whose box overlaps `box`, and some others; an item may be
     /// visited more than once. Returns a box that contains `box`, its sides on the grid's edges pushed to
@@ -79,12 +98,11 @@ public:
         int lastY = firstY;
         for (int y = firstY;; y = std::min(y + stride, y1))
         {
-            const std::uint32_t* start = m_cellStart.data() + y * m_columns;
             for (int x = firstX;; x = std::min(x + stride, x1))
             {
-                for (std::uint32_t k = start[x]; k < start[x + 1]; ++k)
+                for (const std::uint32_t item : Cell(x, y))
                 {
-                    visit(m_items[k]);
+                    visit(item);
                 }
                 if (x + spread >= x1)
                 {
@@ -109,8 +127,7 @@ public:
         {
             return {};
         }
-        const std::size_t cell = static_cast<std::size_t>(Row(point.y) * m_columns + Column(point.x));
-        return {m_items.data() + m_cellStart[cell], m_items.data() + m_cellStart[cell + 1]};
+        return Cell(Column(point.x), Row(point.y));
     }
 
     /// The box every item lies in; an empty box (lower above upper, overlapping nothing) when there are
@@ -131,6 +148,40 @@ public:
     std::size_t Bytes() const;
 
 private:
+    static constexpr std::uint64_t kNoCell = ~std::uint64_t{0}; ///< an empty slot's key
+
+    // The items of the cell in column x, row y (both inside the grid).
+    std::span<const std::uint32_t> Cell(int x, int y) const
+    {
+        if (m_storage == Storage::dense)
+        {
+            const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_columns) +
+                                   static_cast<std::size_t>(x);
+            return {m_items.data() + m_cellStart[at], m_items.data() + m_cellStart[at + 1]};
+        }
+        const HashedCell& cell = m_hashed[Slot(Key(x, y))];
+        return {m_items.data() + cell.begin, m_items.data() + cell.end};
+    }
+    std::uint64_t Key(int x, int y) const
+    {
+        return static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(m_columns) +
+               static_cast<std::uint64_t>(x);
+    }
+    // The slot holding `key`, or the empty slot where its probe ends (whose list is empty). Linear
+    // probing from a multiplicative hash, scaled to the table's size without a division.
+    std::size_t Slot(std::uint64_t key) const
+    {
+        const std::uint64_t hash = (key * 0x9E3779B97F4A7C15ull) >> 32;
+        std::size_t slot = static_cast<std::size_t>((hash * m_hashed.size()) >> 32);
+        while (m_hashed[slot].key != key && m_hashed[slot].key != kNoCell)
+        {
+            slot = slot + 1 == m_hashed.size() ? 0 : slot + 1;
+        }
+        return slot;
+    }
+    // Finds the cell size for `storage` from `cell` up (see Build); sets the columns, rows and cell size.
+    void Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::size_t maxCells,
+             std::size_t maxItems);
     // How many cells on every side of the cells an item overlaps also list it.
     int Spread() const { return m_listing == Listing::neighbourhood ? 1 : 0; }
     // The box of columns [x0, x1] and rows [y0, y1], its sides on or beyond the grid's edges at infinity.
@@ -149,17 +200,18 @@ private:
     // every particle asks, and which side of a cell it is on is as good as random.
     int Column(float x) const { return Clamped((x - m_lower.x) * m_inverseCell, m_columns - 1); }
     int Row(float y) const { return Clamped((y - m_lower.y) * m_inverseCell, m_rows - 1); }
-    // `last` converts exactly: Build makes at most 2^24 cells.
+    // `last` converts exactly: Build makes at most 2^24 cells (hashed: columns, and rows).
     static int Clamped(float cell, int last)
     {
         const float low = cell > 0.0f ? cell : 0.0f;
         const float high = static_cast<float>(last);
         return static_cast<int>(low < high ? low : high);
     }
-    /// With `touches` (the static geometry): room for a build of these boxes in the current cells wherever
-    /// they sit relative to them, so that rebuilding as many primitives after the origin shifted (they line
-    /// up with the cells differently) allocates nothing.
-    void ReserveForAnyAlignment(std::span<const b2AABB> boxes);
+    /// With `touches` (the static geometry), or hashed: room for a build of these boxes in the current cells
+    /// wherever they sit relative to them, so that rebuilding as many primitives after the origin shifted
+    /// (they line up with the cells differently) allocates nothing. Returns the most entries such a build can
+    /// list.
+    std::size_t ReserveForAnyAlignment(std::span<const b2AABB> boxes);
     // Entries a build with the current cells would list.
     std::size_t CountItems(std::span<const b2AABB> boxes) const;
 
@@ -170,7 +222,26 @@ private:
     int m_columns = 0;
     int m_rows = 0;
     Listing m_listing = Listing::overlapped;
-    std::vector<std::uint32_t> m_cellStart; ///< columns * rows + 1 (1 when empty)
+    Storage m_storage = Storage::dense;
+    /// Dense: by cell, columns * rows + 1 (1 when empty): the items of cell c are
+    /// m_items[m_cellStart[c] .. m_cellStart[c + 1]).
+    std::vector<std::uint32_t> m_cellStart;
+    /// A hashed grid's cell: its key (Key; kNoCell: an empty slot) and its items, m_items[begin .. end).
+    struct HashedCell
+    {
+        std::uint64_t key;
+        std::uint32_t begin, end;
+    };
+    /// Hashed: twice as many slots as cells listing something. Their items lie in m_items in the cells'
+    /// row-major order, so a row's neighbouring cells list from neighbouring memory.
+    std::vector<HashedCell> m_hashed;
+    /// Hashed, while building: (cell key, item) for every entry, sorted into m_items.
+    struct Entry
+    {
+        std::uint64_t key;
+        std::uint32_t item;
+    };
+    std::vector<Entry> m_entries;
     std::vector<std::uint32_t> m_items;
     std::vector<float> m_scratch;
     std::size_t m_reservedBoxes = 0; ///< the most boxes a build with an item budget has reserved room for

@@ -426,7 +426,8 @@ void WorldGeometry::BuildStatic(b2World& world)
         }
     }
     DropDuplicatePrimitives();
-    m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood, 0, &PrimitiveTouches, this);
+    m_staticGrid.Build(m_primitiveBoxes, Grid::Listing::neighbourhood, 0, &PrimitiveTouches, this,
+                       Grid::Storage::automatic);
 }
 
 void WorldGeometry::DropDuplicatePrimitives()

@@ -196,6 +196,8 @@ public:
     /// Times the static cache was built (for tests).
     std::uint64_t StaticBuilds() const { return m_builds; }
     std::size_t StaticPrimitives() const { return m_primitives.size(); }
+    /// The static grid's cell size (m): the primitives' median extent, or finer for few long ones.
+    float StaticCellSize() const { return m_staticGrid.CellSize(); }
     std::size_t MovingShapes() const { return m_movingShapes.size(); }
     /// Heap bytes held.
     std::size_t Bytes() const;

@@ -143,61 +143,74 @@ TEST(ParticleAllocation, NoneWhileBodiesSpreadApartAndFallOutOfTheWorld)
 // the shift. The grid keeps room for any alignment.
 TEST(ParticleAllocation, NoneWhenTheOriginShiftsUnderAFinelySplitGround)
 {
-    TestWorld scene;
-    const b2Vec2 far(1000.0f, 1000.0f);
-    b2BodyDef def;
-    def.position = far;
-    b2Body* ground = scene.world->CreateBody(&def);
-    std::vector<b2Vec2> vertices;
-    for (int i = 800; i >= 0; --i) // 0.05 m segments over 40 m, right to left: solid below
+    // Also with a static box far away, which makes the static grid hashed.
+    for (const bool farBox : {false, true})
     {
-        vertices.emplace_back(-20.0f + 0.05f * static_cast<float>(i), 0.0f);
-    }
-    b2ChainShape chain;
-    chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()),
-                      vertices.front() + b2Vec2(1.0f, 0.0f), vertices.back() - b2Vec2(1.0f, 0.0f));
-    ground->CreateFixture(&chain, 0.0f);
-    for (const float x : {-20.5f, 20.5f}) // a wall at each end, 10 m tall
-    {
-        b2PolygonShape wall;
-        wall.SetAsBox(0.5f, 5.0f, b2Vec2(x, 4.0f), 0.0f);
-        ground->CreateFixture(&wall, 0.0f);
-    }
-    const ParticleTypeDef type = LongLivedDust();
-    ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1),
-                             ParticleBudget{300, RecyclePolicy::oldest});
-    for (int i = 0; i < 300; ++i)
-    {
-        particles.Spawn(ParticleSpawn{far + b2Vec2(-9.0f + 0.06f * static_cast<float>(i), 1.0f),
-                                      b2Vec2(0.0f, 0.0f), 1.0f, ParticleTypeId{0}});
-    }
-    b2Vec2 origin(0.0f, 0.0f);
-    auto step = [&](int i)
-    {
-        if (i >= 30 && i % 10 == 5) // none while warming up: one alignment only
+        SCOPED_TRACE(farBox ? "with a box far away" : "alone");
+        TestWorld scene;
+        const b2Vec2 far(1000.0f, 1000.0f);
+        b2BodyDef def;
+        def.position = far;
+        b2Body* ground = scene.world->CreateBody(&def);
+        std::vector<b2Vec2> vertices;
+        for (int i = 800; i >= 0; --i) // 0.05 m segments over 40 m, right to left: solid below
         {
-            // To the ground and back, a little off each time: a different alignment every time.
-            const float k = static_cast<float>(i / 10 + 1);
-            const b2Vec2 shift = ((i / 10) % 2 == 1 ? 1.0f : -1.0f) * far + b2Vec2(0.0137f * k, -0.0291f * k);
-            scene.world->ShiftOrigin(shift);
-            particles.ShiftOrigin(shift);
-            origin += shift;
+            vertices.emplace_back(-20.0f + 0.05f * static_cast<float>(i), 0.0f);
         }
-        scene.world->Step(1.0f / 60.0f, 8, 3);
-        particles.Step(1.0f / 60.0f, scene.world->GetGravity());
-    };
-    for (int i = 0; i < 30; ++i)
-    {
-        step(i);
+        b2ChainShape chain;
+        chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()),
+                          vertices.front() + b2Vec2(1.0f, 0.0f), vertices.back() - b2Vec2(1.0f, 0.0f));
+        ground->CreateFixture(&chain, 0.0f);
+        for (const float x : {-20.5f, 20.5f}) // a wall at each end, 10 m tall
+        {
+            b2PolygonShape wall;
+            wall.SetAsBox(0.5f, 5.0f, b2Vec2(x, 4.0f), 0.0f);
+            ground->CreateFixture(&wall, 0.0f);
+        }
+        if (farBox)
+        {
+            // A box 5 km off: the static grid keeps only its cells that list something (hashed).
+            b2PolygonShape box;
+            box.SetAsBox(1.0f, 1.0f, b2Vec2(5000.0f, 5000.0f), 0.0f);
+            ground->CreateFixture(&box, 0.0f);
+        }
+        const ParticleTypeDef type = LongLivedDust();
+        ParticleSystem particles(*scene.world, std::span<const ParticleTypeDef>(&type, 1),
+                                 ParticleBudget{300, RecyclePolicy::oldest});
+        for (int i = 0; i < 300; ++i)
+        {
+            particles.Spawn(ParticleSpawn{far + b2Vec2(-9.0f + 0.06f * static_cast<float>(i), 1.0f),
+                                          b2Vec2(0.0f, 0.0f), 1.0f, ParticleTypeId{0}});
+        }
+        b2Vec2 origin(0.0f, 0.0f);
+        auto step = [&](int i)
+        {
+            if (i >= 30 && i % 10 == 5) // none while warming up: one alignment only
+            {
+                // To the ground and back, a little off each time: a different alignment every time.
+                const float k = static_cast<float>(i / 10 + 1);
+                const b2Vec2 shift =
+                    ((i / 10) % 2 == 1 ? 1.0f : -1.0f) * far + b2Vec2(0.0137f * k, -0.0291f * k);
+                scene.world->ShiftOrigin(shift);
+                particles.ShiftOrigin(shift);
+                origin += shift;
+            }
+            scene.world->Step(1.0f / 60.0f, 8, 3);
+            particles.Step(1.0f / 60.0f, scene.world->GetGravity());
+        };
+        for (int i = 0; i < 30; ++i)
+        {
+            step(i);
+        }
+        const long before = Allocations();
+        for (int i = 30; i < 630; ++i)
+        {
+            step(i);
+        }
+        EXPECT_EQ(Allocations() - before, 0) << "allocations in 600 steps shifting the origin 60 times";
+        EXPECT_EQ(particles.Count(), 300u);
+        EXPECT_GT(std::abs(origin.x), 0.2f);
     }
-    const long before = Allocations();
-    for (int i = 30; i < 630; ++i)
-    {
-        step(i);
-    }
-    EXPECT_EQ(Allocations() - before, 0) << "allocations in 600 steps shifting the origin 60 times";
-    EXPECT_EQ(particles.Count(), 300u);
-    EXPECT_GT(std::abs(origin.x), 0.2f);
 }
 
 // A game that first has enough particles to split a step long after its warm-up: the helper thread was
