@@ -15,9 +15,10 @@
 // A grid stores its cells' lists in one of two ways. Dense: an array over every cell of the bounds, one
 // load per cell visited; its cells must grow when the bounds are large for the items, so geometry spread
 // thinly over kilometres (a level with one fixture far away) gets cells listing many items each. Hashed:
-// only the cells that list something, in an open-addressed table, one hash and (nearly always) one probe
-// per cell visited; its cell size follows the items whatever their bounds. The static geometry, built
-// rarely and spread as levels are, is hashed; the moving bodies, rebuilt every step, are dense.
+// only the cells that list something, in an open-addressed table, a hash and a probe or two per cell
+// visited; its cell size follows the items whatever their bounds. Storage::automatic (the static geometry)
+// is dense unless its cells would come out more than 8 times too large, then hashed; the moving bodies,
+// rebuilt every step, are dense.
 //
 // Build allocates only when the grid needs more room than any earlier build; Query and Around are const
 // and safe from any number of threads at once.
