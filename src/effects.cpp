@@ -141,7 +141,7 @@ struct Effects::Internals
           events(materials, config.budget.contacts, config.budget.particleHits)
     {
         // A listener the application set on the world before is kept and forwarded to, as one given here.
-        worldListener = world.GetContactManager().m_contactListener;
+        b2ContactListener* worldListener = world.GetContactManager().m_contactListener;
         b2ContactListener* worldOwn = worldListener == BoxDefaultContactListener() ? nullptr : worldListener;
         tracker.SetForward(def.contactListener != nullptr ? def.contactListener : worldOwn);
         tracker.Reserve(config.budget.contacts);
@@ -151,7 +151,6 @@ struct Effects::Internals
     // While the event listener is handed this step's events: the delivery's flag that the destructor sets
     // (the listener may destroy the Effects); null otherwise.
     bool* notifying = nullptr;
-    b2ContactListener* worldListener; // the world's contact listener before Effects: put back if none is set
     FixtureMaterials materials;
     ContactTracker tracker;
     Destruction destruction;
@@ -177,8 +176,15 @@ Effects::~Effects()
     {
         *m_internals->notifying = true; // destroyed by the event listener: the delivery stops at once
     }
+    // The particle bodies go first, while this object is whole: the application's destruction listener
+    // hears of their fixtures through it, as in a step, and may still call into it (a trial's listener
+    // calling ForgetFixture read freed memory when they went after).
+    detail::ParticleSystemAccess::DestroyAllBodies(m_particles);
+    // The application's listeners as they are now (one set on the world before Effects is forwarded to
+    // until replaced; none: Box2D's own, also after SetContactListener(nullptr)).
     b2ContactListener* forward = m_internals->tracker.Forward();
-    m_world.SetContactListener(forward != nullptr ? forward : m_internals->worldListener);
+    m_world.SetContactListener(
+        forward != nullptr ? forward : const_cast<b2ContactListener*>(BoxDefaultContactListener()));
     m_world.SetDestructionListener(m_internals->destruction.forward);
 }
 

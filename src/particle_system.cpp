@@ -439,11 +439,17 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
 
 ParticleSystem::~ParticleSystem()
 {
-    m_impl->DestroyRecycledBodies();
-    m_count = m_impl->DropForgotten(m_count, m_capacity);
-    for (std::uint32_t i = 0; i < m_count; ++i)
+    detail::ParticleSystemAccess::DestroyAllBodies(*this);
+}
+
+void detail::ParticleSystemAccess::DestroyAllBodies(ParticleSystem& system)
+{
+    ParticleSystem::Impl& impl = *system.m_impl;
+    impl.DestroyRecycledBodies();
+    system.m_count = impl.DropForgotten(system.m_count, system.m_capacity);
+    for (std::uint32_t i = 0; i < system.m_count; ++i)
     {
-        m_impl->ReleaseBody(View().Slot(i));
+        impl.ReleaseBody(system.View().Slot(i));
     }
 }
 

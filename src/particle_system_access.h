@@ -18,6 +18,10 @@ struct ParticleSystemAccess
     /// its contacts). DestroyDeferredBodies destroys them, in the order they were recycled.
     static void DeferBodyDestruction(ParticleSystem& system);
     static void DestroyDeferredBodies(ParticleSystem& system);
+    /// Destroys the bodies of every body-backed particle now, as the destructor would: Effects' destructor
+    /// does it first, while its destruction listener still forwards to the application's and the
+    /// application may still call into it.
+    static void DestroyAllBodies(ParticleSystem& system);
 };
 
 /// Ignores the bodies of a particle system's body-backed particles in spawn point tests.

@@ -181,4 +181,49 @@ TEST(ParticleBodies, TheApplicationHearsTheOnesItDestroysAsParticleBodies)
     scene.Step(); // and the particles whose bodies went leave the pool cleanly
 }
 
+// Destroying Effects destroys its particles' bodies, and the application's destruction listener hears of
+// their fixtures: a trial's listener called ForgetFixture and Material from there, after the Effects had
+// freed what they read (a crash, and a heap-use-after-free under ASan). The bodies now go first, while the
+// Effects is whole, their goodbyes forwarded as in a step.
+TEST(ParticleBodies, TheApplicationsListenerMayCallIntoTheEffectsWhileItsDestructorDestroysThem)
+{
+    class Goodbyes final : public b2DestructionListener
+    {
+    public:
+        void SayGoodbye(b2Fixture* fixture) override
+        {
+            particles += effects->IsParticleBody(fixture->GetBody()) ? 1 : 0;
+            unmaterialled += effects->Material(fixture).IsValid() ? 0 : 1;
+            effects->ForgetFixture(fixture);
+        }
+        void SayGoodbye(b2Joint*) override {}
+        Effects* effects = nullptr;
+        int particles = 0, unmaterialled = 0;
+    } goodbyes;
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround(0.8f);
+    b2Body* block = scene.CreateBox(b2Vec2(0.0f, 0.25f), 0.5f, 0.25f, 0.5f);
+    block->SetLinearVelocity(b2Vec2(12.0f, 0.0f));
+    EffectsDef def;
+    def.config = TutorialPreset();
+    def.destructionListener = &goodbyes;
+    scene.effects = std::make_unique<Effects>(*scene.world, def);
+    goodbyes.effects = scene.effects.get();
+    scene.effects->SetMaterial(ground, scene.Material("concrete"));
+    scene.effects->SetMaterial(block, scene.Material("steel"));
+    for (int i = 0; i < 20; ++i)
+    {
+        scene.Step();
+    }
+    const std::uint32_t live = scene.effects->Particles().count;
+    ASSERT_GT(live, 5u);
+    goodbyes.particles = 0;
+    goodbyes.unmaterialled = 0;
+    scene.effects.reset();
+    EXPECT_EQ(goodbyes.particles, static_cast<int>(live))
+        << "one fixture a particle body, each still a particle's";
+    EXPECT_EQ(goodbyes.unmaterialled, static_cast<int>(live));
+    EXPECT_EQ(scene.world->GetBodyCount(), 2) << "only the ground and the block are left";
+}
+
 } // namespace cfx::test

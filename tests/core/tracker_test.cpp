@@ -335,4 +335,25 @@ TEST(ContactTracker, AListenerSetOnTheWorldBeforeEffectsIsKeptAndPutBack)
     EXPECT_EQ(plain.world->GetContactManager().m_contactListener, boxDefault);
 }
 
+// SetContactListener(nullptr) removes the application's listener for good: a trial set one on the world,
+// created Effects, removed it through Effects and deleted it, and the destructor put the deleted listener
+// back (the next world step crashed in Box2D). The destructor puts back what it forwards to at that time.
+TEST(ContactTracker, ARemovedListenerIsNotPutBack)
+{
+    const b2ContactListener* boxDefault = b2World(b2Vec2(0.0f, 0.0f)).GetContactManager().m_contactListener;
+    RecordingListener recorder;
+    BoxOnGround scene;
+    scene.world->SetContactListener(&recorder);
+    scene.Attach();
+    scene.Assign();
+    scene.Step();
+    ASSERT_FALSE(recorder.calls.empty());
+    scene.effects->SetContactListener(nullptr);
+    recorder.calls.clear();
+    scene.Step();
+    EXPECT_TRUE(recorder.calls.empty()) << "removed";
+    scene.effects.reset();
+    EXPECT_EQ(scene.world->GetContactManager().m_contactListener, boxDefault);
+}
+
 } // namespace cfx::test
