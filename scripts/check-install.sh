@@ -22,6 +22,12 @@ cmake --build "$work/consumer-build" >/dev/null
 "$work/consumer-build/consumer" "$version"
 "$work/consumer-build/consumer_components" "$prefix/share/contactfx/scenes/grinder.json"
 "$work/consumer-build/consumer_render"
+# docs/api.md shows the consumer's own find_package line (its version follows the release's).
+consumer_line="$(sed -n 's/^\(find_package(contactfx [^)]*)\).*/\1/p' tests/consumer/CMakeLists.txt)"
+if ! grep -qF "$consumer_line" docs/api.md; then
+  echo "check-install: docs/api.md does not show the consumer's line: $consumer_line" >&2
+  exit 1
+fi
 # An unknown component is refused with a message naming it.
 mkdir -p "$work/unknown"
 printf 'cmake_minimum_required(VERSION 3.25)\nproject(u LANGUAGES CXX)\nfind_package(contactfx REQUIRED COMPONENTS bogus)\n' \
