@@ -199,6 +199,8 @@ void Grid::Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::
             m_rows = static_cast<int>(rows);
             m_cellSize = cell;
             m_inverseCell = 1.0f / cell;
+            m_cellWide = static_cast<double>(cell);
+            m_inverseCellWide = 1.0 / m_cellWide;
             const std::size_t items = maxItems > 0 || storage == Storage::hashed ? CountItems(boxes) : 0;
             if ((maxItems == 0 || items <= maxItems) &&
                 (storage == Storage::dense || items <= listed * maxCells))

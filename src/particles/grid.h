@@ -93,6 +93,15 @@ public:
         // The cells visited, every (2 spread + 1)-th; each lists what lies `spread` cells on either side.
         const int spread = Spread();
         const int stride = 2 * spread + 1;
+        if (m_storage == Storage::hashed &&
+            static_cast<double>((x1 - x0) / stride + 1) * static_cast<double>((y1 - y0) / stride + 1) >
+                static_cast<double>(m_hashed.size()))
+        {
+            // More cells to visit than the table has slots (a very fast particle among fine cells): every
+            // cell listing something in the range instead, each listing what lies `spread` cells beyond.
+            VisitHashedRange(x0, x1, y0, y1, visit);
+            return CellsBox(x0 - spread, x1 + spread, y0 - spread, y1 + spread);
+        }
         const int firstX = std::min(x0 + spread, x1);
         const int firstY = std::min(y0 + spread, y1);
         int lastX = firstX;
@@ -180,6 +189,24 @@ private:
         }
         return slot;
     }
+    // Hashed: visits the items of every cell listing something in columns [x0, x1] and rows [y0, y1].
+    template <typename Visit> void VisitHashedRange(int x0, int x1, int y0, int y1, Visit& visit) const
+    {
+        const auto columns = static_cast<std::uint64_t>(m_columns);
+        for (const HashedCell& cell : m_hashed)
+        {
+            const auto x = static_cast<int>(cell.key % columns);
+            const auto y = static_cast<int>(cell.key / columns);
+            if (cell.key == kNoCell || x < x0 || x > x1 || y < y0 || y > y1)
+            {
+                continue;
+            }
+            for (std::uint32_t k = cell.begin; k < cell.end; ++k)
+            {
+                visit(m_items[k]);
+            }
+        }
+    }
     // Finds the cell size for `storage` from `cell` up (see Build); sets the columns, rows and cell size.
     void Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::size_t maxCells,
              std::size_t maxItems);
@@ -190,17 +217,38 @@ private:
     {
         constexpr float kEdge = std::numeric_limits<float>::infinity();
         b2AABB box;
-        box.lowerBound.x = x0 <= 0 ? -kEdge : m_lower.x + static_cast<float>(x0) * m_cellSize;
-        box.lowerBound.y = y0 <= 0 ? -kEdge : m_lower.y + static_cast<float>(y0) * m_cellSize;
-        box.upperBound.x = x1 >= m_columns - 1 ? kEdge : m_lower.x + static_cast<float>(x1 + 1) * m_cellSize;
-        box.upperBound.y = y1 >= m_rows - 1 ? kEdge : m_lower.y + static_cast<float>(y1 + 1) * m_cellSize;
+        box.lowerBound.x = x0 <= 0 ? -kEdge : Edge(m_lower.x, x0);
+        box.lowerBound.y = y0 <= 0 ? -kEdge : Edge(m_lower.y, y0);
+        box.upperBound.x = x1 >= m_columns - 1 ? kEdge : Edge(m_lower.x, x1 + 1);
+        box.upperBound.y = y1 >= m_rows - 1 ? kEdge : Edge(m_lower.y, y1 + 1);
         return box;
+    }
+    // Where the cell line `line` lies, from the grid's lower side `lower`. Hashed grids compute it, and
+    // cells (Column, Row), in doubles: their fine cells may lie kilometres from the lower side (one fixture
+    // far away), where floats would place a line off by a good part of a cell, and a cell would not list a
+    // primitive that its index says lies in it (a fuzz found sweeps missing touches so).
+    float Edge(float lower, int line) const
+    {
+        return m_storage == Storage::hashed
+                   ? static_cast<float>(static_cast<double>(lower) + static_cast<double>(line) * m_cellWide)
+                   : lower + static_cast<float>(line) * m_cellSize;
     }
     // Clamped before the conversion, so that far, huge or not-a-number coordinates convert no value an
     // int cannot hold (NaN goes to 0). Two selects the compiler makes a max and a min, without a branch:
     // every particle asks, and which side of a cell it is on is as good as random.
-    int Column(float x) const { return Clamped((x - m_lower.x) * m_inverseCell, m_columns - 1); }
-    int Row(float y) const { return Clamped((y - m_lower.y) * m_inverseCell, m_rows - 1); }
+    int Column(float x) const { return Line(x, m_lower.x, m_columns - 1); }
+    int Row(float y) const { return Line(y, m_lower.y, m_rows - 1); }
+    int Line(float at, float lower, int last) const
+    {
+        if (m_storage == Storage::hashed)
+        {
+            const double cell = (static_cast<double>(at) - static_cast<double>(lower)) * m_inverseCellWide;
+            const double low = cell > 0.0 ? cell : 0.0;
+            const auto high = static_cast<double>(last);
+            return static_cast<int>(low < high ? low : high);
+        }
+        return Clamped((at - lower) * m_inverseCell, last);
+    }
     // `last` converts exactly: Build makes at most 2^24 cells (hashed: columns, and rows).
     static int Clamped(float cell, int last)
     {
@@ -220,6 +268,8 @@ private:
     b2Vec2 m_upper{0.0f, 0.0f};
     float m_cellSize = 1.0f;
     float m_inverseCell = 1.0f;
+    double m_cellWide = 1.0;        ///< hashed: m_cellSize as a double
+    double m_inverseCellWide = 1.0; ///< hashed: 1 / m_cellSize in doubles
     int m_columns = 0;
     int m_rows = 0;
     Listing m_listing = Listing::overlapped;
