@@ -151,6 +151,9 @@ struct Effects::Internals
     // While the event listener is handed this step's events: the delivery's flag that the destructor sets
     // (the listener may destroy the Effects); null otherwise.
     bool* notifying = nullptr;
+    // While the destructor destroys the particle bodies (the application's destruction listener may call
+    // in): Step does nothing then.
+    bool destroying = false;
     FixtureMaterials materials;
     ContactTracker tracker;
     Destruction destruction;
@@ -179,6 +182,7 @@ Effects::~Effects()
     // The particle bodies go first, while this object is whole: the application's destruction listener
     // hears of their fixtures through it, as in a step, and may still call into it (a trial's listener
     // calling ForgetFixture read freed memory when they went after).
+    m_internals->destroying = true;
     detail::ParticleSystemAccess::DestroyAllBodies(m_particles);
     // The application's listeners as they are now (one set on the world before Effects is forwarded to
     // until replaced; none: Box2D's own, also after SetContactListener(nullptr)).
@@ -246,6 +250,10 @@ void Effects::SetDestructionListener(b2DestructionListener* listener)
 
 void Effects::Step(float dt)
 {
+    if (m_internals->destroying)
+    {
+        return; // called by the application's destruction listener from the destructor: no step to take
+    }
     // Checked before anything changes (the particle system checks again, for its own users).
     if (m_internals->notifying != nullptr)
     {

@@ -22,10 +22,11 @@
 // (Box2D 2.4 has no way to read it): it is replaced, so give it through EffectsDef::destructionListener.
 // The destructor first destroys the bodies of its body-backed particles (ParticleBackend::body, the
 // tutorial preset), their fixtures' goodbyes forwarded as in a step (the application's listener may call
-// into the Effects then), and then puts the application's listeners back: the ones it forwards to at that
-// time (none after SetContactListener(nullptr): Box2D's own). Through the destruction listener it forgets
-// fixtures destroyed with their body and notices when the application destroys the Box2D body of a
-// body-backed particle: that particle goes, and its body is never destroyed twice.
+// into the Effects then; Step does nothing then), and then puts the application's listeners back: the
+// ones it forwards to at that time (none after SetContactListener(nullptr): Box2D's own). Through the
+// destruction listener it forgets fixtures destroyed with their body and notices when the application
+// destroys the Box2D body of a body-backed particle: that particle goes, and its body is never destroyed
+// twice.
 // Threading: one thread, the one that steps the world. Effects on different worlds are independent: each
 // may be created, stepped and destroyed on its own thread, at the same time as the others.
 #pragma once
