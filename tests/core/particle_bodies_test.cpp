@@ -11,6 +11,27 @@
 namespace cfx::test
 {
 
+namespace
+{
+
+// A steel block sliding at 12 m/s on concrete, sparking with the tutorial preset (a Box2D body a particle),
+// `goodbyes` given as the application's destruction listener.
+Effects& AttachToASlidingBlock(TestWorld& scene, b2DestructionListener& goodbyes)
+{
+    b2Body* ground = scene.CreateGround(0.8f);
+    b2Body* block = scene.CreateBox(b2Vec2(0.0f, 0.25f), 0.5f, 0.25f, 0.5f);
+    block->SetLinearVelocity(b2Vec2(12.0f, 0.0f));
+    EffectsDef def;
+    def.config = TutorialPreset();
+    def.destructionListener = &goodbyes;
+    scene.effects = std::make_unique<Effects>(*scene.world, def);
+    scene.effects->SetMaterial(ground, scene.Material("concrete"));
+    scene.effects->SetMaterial(block, scene.Material("steel"));
+    return *scene.effects;
+}
+
+} // namespace
+
 // With the tutorial preset every particle is a Box2D body: the application's contact and destruction
 // listeners hear of them, and IsParticleBody names them, and only them, in either (a re-check found it false
 // for the fixtures of a particle body the system was destroying).
@@ -145,16 +166,7 @@ TEST(ParticleBodies, TheApplicationHearsTheOnesItDestroysAsParticleBodies)
         int particle = 0, other = 0;
     } goodbyes;
     TestWorld scene;
-    b2Body* ground = scene.CreateGround(0.8f);
-    b2Body* block = scene.CreateBox(b2Vec2(0.0f, 0.25f), 0.5f, 0.25f, 0.5f);
-    block->SetLinearVelocity(b2Vec2(12.0f, 0.0f));
-    EffectsDef def;
-    def.config = TutorialPreset();
-    def.destructionListener = &goodbyes;
-    scene.effects = std::make_unique<Effects>(*scene.world, def);
-    goodbyes.effects = scene.effects.get();
-    scene.effects->SetMaterial(ground, scene.Material("concrete"));
-    scene.effects->SetMaterial(block, scene.Material("steel"));
+    goodbyes.effects = &AttachToASlidingBlock(scene, goodbyes);
     for (int i = 0; i < 10; ++i)
     {
         scene.Step();
@@ -208,16 +220,7 @@ TEST(ParticleBodies, TheApplicationsListenerMayCallIntoTheEffectsWhileItsDestruc
         int particles = 0, unmaterialled = 0;
     } goodbyes;
     TestWorld scene;
-    b2Body* ground = scene.CreateGround(0.8f);
-    b2Body* block = scene.CreateBox(b2Vec2(0.0f, 0.25f), 0.5f, 0.25f, 0.5f);
-    block->SetLinearVelocity(b2Vec2(12.0f, 0.0f));
-    EffectsDef def;
-    def.config = TutorialPreset();
-    def.destructionListener = &goodbyes;
-    scene.effects = std::make_unique<Effects>(*scene.world, def);
-    goodbyes.effects = scene.effects.get();
-    scene.effects->SetMaterial(ground, scene.Material("concrete"));
-    scene.effects->SetMaterial(block, scene.Material("steel"));
+    goodbyes.effects = &AttachToASlidingBlock(scene, goodbyes);
     for (int i = 0; i < 20; ++i)
     {
         scene.Step();

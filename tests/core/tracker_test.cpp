@@ -77,6 +77,14 @@ struct RawTracker : TestWorld
     b2Body* box = nullptr;
 };
 
+// A box on the ground with a contact listener set on the world before Effects is attached.
+void AttachAfterAWorldListener(BoxOnGround& scene, b2ContactListener& listener)
+{
+    scene.world->SetContactListener(&listener);
+    scene.Attach();
+    scene.Assign();
+}
+
 } // namespace
 
 TEST(ContactTracker, EndedPairsListsOnlyPairsAStepHasSeen)
@@ -314,9 +322,7 @@ TEST(ContactTracker, AListenerSetOnTheWorldBeforeEffectsIsKeptAndPutBack)
     RecordingListener recorder;
     {
         BoxOnGround scene;
-        scene.world->SetContactListener(&recorder);
-        scene.Attach();
-        scene.Assign();
+        AttachAfterAWorldListener(scene, recorder);
         for (int i = 0; i < 10; ++i)
         {
             scene.Step();
@@ -343,9 +349,7 @@ TEST(ContactTracker, ARemovedListenerIsNotPutBack)
     const b2ContactListener* boxDefault = b2World(b2Vec2(0.0f, 0.0f)).GetContactManager().m_contactListener;
     RecordingListener recorder;
     BoxOnGround scene;
-    scene.world->SetContactListener(&recorder);
-    scene.Attach();
-    scene.Assign();
+    AttachAfterAWorldListener(scene, recorder);
     scene.Step();
     ASSERT_FALSE(recorder.calls.empty());
     scene.effects->SetContactListener(nullptr);
