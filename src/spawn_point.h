@@ -16,6 +16,8 @@
 // (piles, crevices), the search says so and the particle is not spawned: a particle never starts inside.
 #pragma once
 
+#include "particles/collision_filter.h"
+
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_math.h>
 #include <cstdint>
@@ -47,8 +49,8 @@ struct Solids
     bool Include(const b2Fixture& fixture) const
     {
         const b2Filter& filter = fixture.GetFilterData();
-        return !fixture.IsSensor() && (filter.maskBits & categoryBits) != 0 &&
-               (filter.categoryBits & maskBits) != 0 &&
+        return !fixture.IsSensor() &&
+               particles::FilterAccepts(categoryBits, maskBits, filter.categoryBits, filter.maskBits) &&
                (ignore == nullptr || !ignore->Ignore(fixture.GetBody()));
     }
 };

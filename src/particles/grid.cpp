@@ -82,12 +82,12 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
         m_reservedBoxes = boxes.size();
     }
     m_storage = storage == Storage::hashed ? Storage::hashed : Storage::dense;
-    Fit(boxes, m_storage, cell, maxCells, maxItems);
+    Fit(boxes, cell, maxCells, maxItems);
     if (storage == Storage::automatic && m_cellSize > kHashedAbove * cell)
     {
         // Bounds large for the items (a fixture far away): dense cells would each list many.
         m_storage = Storage::hashed;
-        Fit(boxes, m_storage, cell, maxCells, maxItems);
+        Fit(boxes, cell, maxCells, maxItems);
     }
 
     // The cells listing a box: those it overlaps, and `spread` more on every side; with `touches`, only
@@ -158,8 +158,7 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     m_cellStart.assign(cells + 1, 0);
     for (std::uint32_t index = 0; index < boxes.size(); ++index)
     {
-        forCells(index,
-                 [&](int x, int y) { ++m_cellStart[static_cast<std::size_t>(y * m_columns + x) + 1]; });
+        forCells(index, [&](int x, int y) { ++m_cellStart[DenseIndex(x, y) + 1]; });
     }
     for (std::size_t c = 0; c < cells; ++c)
     {
@@ -169,8 +168,7 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     // Fill using the row starts as cursors, then shift them back.
     for (std::uint32_t index = 0; index < boxes.size(); ++index)
     {
-        forCells(index, [&](int x, int y)
-                 { m_items[m_cellStart[static_cast<std::size_t>(y * m_columns + x)]++] = index; });
+        forCells(index, [&](int x, int y) { m_items[m_cellStart[DenseIndex(x, y)]++] = index; });
     }
     for (std::size_t c = cells; c > 0; --c)
     {
@@ -179,8 +177,7 @@ void Grid::Build(std::span<const b2AABB> boxes, Listing listing, std::size_t max
     m_cellStart[0] = 0;
 }
 
-void Grid::Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::size_t maxCells,
-               std::size_t maxItems)
+void Grid::Fit(std::span<const b2AABB> boxes, float cell, std::size_t maxCells, std::size_t maxItems)
 {
     const b2Vec2 size = m_upper - m_lower;
     const std::size_t listed = static_cast<std::size_t>((2 * Spread() + 1) * (2 * Spread() + 1));
@@ -190,7 +187,7 @@ void Grid::Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::
         const double rows = std::floor(static_cast<double>(size.y) / cell) + 1.0;
         // At most 2^24 cells (hashed: columns, and rows), so that every column and row index is exact as
         // a float (Clamped).
-        const bool fits = storage == Storage::dense
+        const bool fits = m_storage == Storage::dense
                               ? columns * rows <= static_cast<double>(maxCells)
                               : std::max(columns, rows) <= static_cast<double>(kMaxCells);
         if (fits)
@@ -199,11 +196,10 @@ void Grid::Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::
             m_rows = static_cast<int>(rows);
             m_cellSize = cell;
             m_inverseCell = 1.0f / cell;
-            m_cellWide = static_cast<double>(cell);
-            m_inverseCellWide = 1.0 / m_cellWide;
-            const std::size_t items = maxItems > 0 || storage == Storage::hashed ? CountItems(boxes) : 0;
+            m_inverseCellWide = 1.0 / static_cast<double>(cell);
+            const std::size_t items = maxItems > 0 || m_storage == Storage::hashed ? CountItems(boxes) : 0;
             if ((maxItems == 0 || items <= maxItems) &&
-                (storage == Storage::dense || items <= listed * maxCells))
+                (m_storage == Storage::dense || items <= listed * maxCells))
             {
                 return;
             }

@@ -165,13 +165,19 @@ private:
     {
         if (m_storage == Storage::dense)
         {
-            const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_columns) +
-                                   static_cast<std::size_t>(x);
+            const std::size_t at = DenseIndex(x, y);
             return {m_items.data() + m_cellStart[at], m_items.data() + m_cellStart[at + 1]};
         }
         const HashedCell& cell = m_hashed[Slot(Key(x, y))];
         return {m_items.data() + cell.begin, m_items.data() + cell.end};
     }
+    // Dense: the cell's index in m_cellStart.
+    std::size_t DenseIndex(int x, int y) const
+    {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(m_columns) +
+               static_cast<std::size_t>(x);
+    }
+    // Hashed: the cell's key in the table.
     std::uint64_t Key(int x, int y) const
     {
         return static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(m_columns) +
@@ -195,9 +201,13 @@ private:
         const auto columns = static_cast<std::uint64_t>(m_columns);
         for (const HashedCell& cell : m_hashed)
         {
+            if (cell.key == kNoCell)
+            {
+                continue;
+            }
             const auto x = static_cast<int>(cell.key % columns);
             const auto y = static_cast<int>(cell.key / columns);
-            if (cell.key == kNoCell || x < x0 || x > x1 || y < y0 || y > y1)
+            if (x < x0 || x > x1 || y < y0 || y > y1)
             {
                 continue;
             }
@@ -207,9 +217,9 @@ private:
             }
         }
     }
-    // Finds the cell size for `storage` from `cell` up (see Build); sets the columns, rows and cell size.
-    void Fit(std::span<const b2AABB> boxes, Storage storage, float cell, std::size_t maxCells,
-             std::size_t maxItems);
+    // Finds the cell size for the grid's storage from `cell` up (see Build); sets the columns, rows and cell
+    // size.
+    void Fit(std::span<const b2AABB> boxes, float cell, std::size_t maxCells, std::size_t maxItems);
     // How many cells on every side of the cells an item overlaps also list it.
     int Spread() const { return m_listing == Listing::neighbourhood ? 1 : 0; }
     // The box of columns [x0, x1] and rows [y0, y1], its sides on or beyond the grid's edges at infinity.
@@ -230,7 +240,8 @@ private:
     float Edge(float lower, int line) const
     {
         return m_storage == Storage::hashed
-                   ? static_cast<float>(static_cast<double>(lower) + static_cast<double>(line) * m_cellWide)
+                   ? static_cast<float>(static_cast<double>(lower) +
+                                        static_cast<double>(line) * static_cast<double>(m_cellSize))
                    : lower + static_cast<float>(line) * m_cellSize;
     }
     // Clamped before the conversion, so that far, huge or not-a-number coordinates convert no value an
@@ -240,20 +251,15 @@ private:
     int Row(float y) const { return Line(y, m_lower.y, m_rows - 1); }
     int Line(float at, float lower, int last) const
     {
-        if (m_storage == Storage::hashed)
-        {
-            const double cell = (static_cast<double>(at) - static_cast<double>(lower)) * m_inverseCellWide;
-            const double low = cell > 0.0 ? cell : 0.0;
-            const auto high = static_cast<double>(last);
-            return static_cast<int>(low < high ? low : high);
-        }
-        return Clamped((at - lower) * m_inverseCell, last);
+        return m_storage == Storage::hashed
+                   ? Clamped((static_cast<double>(at) - static_cast<double>(lower)) * m_inverseCellWide, last)
+                   : Clamped((at - lower) * m_inverseCell, last);
     }
     // `last` converts exactly: Build makes at most 2^24 cells (hashed: columns, and rows).
-    static int Clamped(float cell, int last)
+    template <typename Real> static int Clamped(Real cell, int last)
     {
-        const float low = cell > 0.0f ? cell : 0.0f;
-        const float high = static_cast<float>(last);
+        const Real low = cell > Real{0} ? cell : Real{0};
+        const auto high = static_cast<Real>(last);
         return static_cast<int>(low < high ? low : high);
     }
     /// With `touches` (the static geometry), or hashed: room for a build of these boxes in the current cells
@@ -268,7 +274,6 @@ private:
     b2Vec2 m_upper{0.0f, 0.0f};
     float m_cellSize = 1.0f;
     float m_inverseCell = 1.0f;
-    double m_cellWide = 1.0;        ///< hashed: m_cellSize as a double
     double m_inverseCellWide = 1.0; ///< hashed: 1 / m_cellSize in doubles
     int m_columns = 0;
     int m_rows = 0;

@@ -24,6 +24,7 @@
 // Allocation: none once the vectors have grown to the world's size.
 #pragma once
 
+#include "particles/collision_filter.h"
 #include "particles/grid.h"
 #include "particles/sweep.h"
 
@@ -74,7 +75,7 @@ struct ParticleSide
     /// Whether the particle collides with a fixture of this filter (Box2D's category and mask test).
     bool Accepts(std::uint16_t fixtureCategoryBits, std::uint16_t fixtureMaskBits) const
     {
-        return (fixtureMaskBits & categoryBits) != 0 && (fixtureCategoryBits & maskBits) != 0;
+        return FilterAccepts(categoryBits, maskBits, fixtureCategoryBits, fixtureMaskBits);
     }
 };
 
