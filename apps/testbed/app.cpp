@@ -279,7 +279,14 @@ int RunTestbed(const Options& options)
     {
         config = LoadEffectsFile(options.effects);
     }
-    session.Open(*FindScene(options.scene), config);
+    if (options.sceneFile.empty())
+    {
+        session.Open(*FindScene(SceneName(options)), config);
+    }
+    else
+    {
+        session.OpenFile(options.sceneFile, config);
+    }
 
     const bool headless = options.frames > 0;
     Window window(kDefaultWidth, kDefaultHeight, "contactfx testbed", !headless);

@@ -1,6 +1,6 @@
 // contactfx-testbed: look at contactfx's effects live, in the spirit of Box2D's testbed.
 //
-//   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]]
+//   contactfx-testbed [SCENE.json | --scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]]
 //   contactfx-testbed --version
 //
 // Exit code 0 on success (and for --help and --version), 1 on any error (one line on stderr naming the
@@ -34,7 +34,12 @@ int main(int argc, char** argv)
 {
     cfx::testbed::Options options;
     CLI::App app{"contactfx-testbed: contactfx's effects live (GLFW, OpenGL 3, Dear ImGui)"};
-    app.add_option("--scene", options.scene, "Scene to open: " + cfx::SceneNames())->capture_default_str();
+    app.add_option("scene", options.sceneFile,
+                   "RUBE scene file to open as it is: no scripted drive, the whole world in view, the "
+                   "default preset unless --effects")
+        ->check(cfx::NamesAFile());
+    app.add_option("--scene", options.scene,
+                   "Registered scene to open instead (default tutorial): " + cfx::SceneNames());
     app.add_option("--effects", options.effects, "Effects config JSON replacing the scene's")
         ->check(cfx::NamesAFile());
     CLI::Option* frames = app.add_option("--frames", options.frames,

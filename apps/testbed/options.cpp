@@ -50,9 +50,18 @@ HeadlessFrame HeadlessFramePlan(int frame, int frames)
     return plan;
 }
 
+std::string_view SceneName(const Options& options)
+{
+    return options.scene.empty() ? std::string_view("tutorial") : std::string_view(options.scene);
+}
+
 void CheckOptions(const Options& options, bool framesGiven)
 {
-    if (FindScene(options.scene) == nullptr)
+    if (!options.sceneFile.empty() && !options.scene.empty())
+    {
+        throw InputError(kCommandLine, "scene", "give either a scene file or --scene NAME, not both");
+    }
+    if (options.sceneFile.empty() && FindScene(SceneName(options)) == nullptr)
     {
         throw InputError(kCommandLine, "--scene",
                          "unknown scene \"" + options.scene + "\" (registered: " + SceneNames() + ")");

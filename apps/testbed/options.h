@@ -1,6 +1,7 @@
 // contactfx-testbed: the command line.
 //
-//   contactfx-testbed [--scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]] [--hide-particles]
+//   contactfx-testbed [SCENE.json | --scene NAME] [--effects FX.json] [--frames N [--screenshot FILE]]
+//   [--hide-particles]
 //                     [--debug]
 //   contactfx-testbed --version        prints "contactfx-testbed VERSION" and exits 0 (main.cpp)
 //
@@ -10,21 +11,27 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace cfx::testbed
 {
 
 struct Options
 {
-    std::string scene = "tutorial"; ///< a registered scene (scenes.h)
-    std::string effects;            ///< effects config file replacing the scene's; empty: the scene's
-    int frames = 0;                 ///< frames to run without interaction, >= 1 (main.cpp); 0: interactive
-    std::string screenshot;         ///< PNG of the last frame; needs frames
-    bool hideParticles = false;     ///< draw the scene without its particles
-    bool debug = false;             ///< start with every debug layer on (DebugLayers::All)
+    std::string sceneFile;  ///< a RUBE scene file, opened as it is (Session::OpenFile); empty: `scene`
+    std::string scene;      ///< a registered scene (scenes.h); empty: "tutorial" unless sceneFile is given
+    std::string effects;    ///< effects config file replacing the scene's; empty: the scene's
+    int frames = 0;         ///< frames to run without interaction, >= 1 (main.cpp); 0: interactive
+    std::string screenshot; ///< PNG of the last frame; needs frames
+    bool hideParticles = false; ///< draw the scene without its particles
+    bool debug = false;         ///< start with every debug layer on (DebugLayers::All)
 };
 
-/// Throws InputError (file "<command line>", the flag as path) for an unknown scene, a screenshot without
+/// The registered scene to open when no scene file is given: `scene`, else "tutorial".
+std::string_view SceneName(const Options& options);
+
+/// Throws InputError (file "<command line>", the flag as path) for both a scene file and --scene ("scene"),
+/// an unknown scene, a screenshot without
 /// frames or one OutputFileProblem (contactfx/files) refuses (a folder, a device, a read-only file, a missing
 /// or unwritable folder), one that is the effects file (the same name, or the same file through a symbolic or
 /// hard link: "is the input file ... not overwritten"), or a name not ending in .png. Empty names are "not

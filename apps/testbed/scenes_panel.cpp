@@ -7,6 +7,10 @@ namespace cfx::testbed
 
 void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
 {
+    if (FindScene(session.Entry().name) != &session.Entry()) // a scene file: listed first, selected
+    {
+        ImGui::Selectable(std::string(session.Entry().name).c_str(), true);
+    }
     for (const SceneEntry& entry : Scenes())
     {
         const bool current = &entry == &session.Entry();
@@ -56,7 +60,9 @@ void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
             session.ToggleFourWheelDrive();
         }
         ImGui::TextWrapped("%s", session.Manual() ? "Driving: keys a / d, s brakes"
-                                                  : "Driving: the scene's script (a, s, d take over)");
+                                 : session.Entry().drive.empty()
+                                     ? "Driving: no script (a, s, d drive)"
+                                     : "Driving: the scene's script (a, s, d take over)");
     }
     ImGui::Checkbox("Shapes", &toggles.shapes);
     ImGui::SameLine();

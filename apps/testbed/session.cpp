@@ -44,6 +44,19 @@ void Session::Open(const SceneEntry& entry, const std::optional<EffectsConfig>& 
     ResetView(m_camera.width, m_camera.height);
 }
 
+void Session::OpenFile(const std::filesystem::path& file, const std::optional<EffectsConfig>& config)
+{
+    auto scene = std::make_unique<FileScene>();
+    scene->name = file.filename().string();
+    scene->path = std::filesystem::absolute(file).lexically_normal().string();
+    scene->entry = SceneEntry{.name = scene->name,
+                              .title = scene->path,
+                              .file = scene->path, // an absolute path: the scenes folder is not prepended
+                              .view = SceneView{.wholeWorld = true}};
+    Open(scene->entry, config); // throws before anything here changes
+    m_file = std::move(scene);
+}
+
 void Session::Restart()
 {
     Open(*m_entry, m_simulation->GetEffects().Config());
@@ -53,7 +66,10 @@ void Session::OpenNeighbour(int step)
 {
     const std::span<const SceneEntry> scenes = Scenes();
     const auto count = static_cast<long>(scenes.size());
-    const long current = m_entry - scenes.data();
+    const auto registered = std::find_if(scenes.begin(), scenes.end(),
+                                         [this](const SceneEntry& entry) { return &entry == m_entry; });
+    // A scene file sits just before the first registered scene and just after the last.
+    const long current = registered != scenes.end() ? registered - scenes.begin() : step > 0 ? -1 : count;
     const long next = ((current + step) % count + count) % count;
     Open(scenes[static_cast<std::size_t>(next)]);
 }

@@ -1,10 +1,10 @@
 // contactfx-testbed: the scene on show and everything the user does to it.
 //
-// Holds the registered scene's simulation, its camera, the driver's keys, pause and single step, the
-// mouse joint, and the effects configuration in force. Opening another scene or changing the
-// configuration never leaves a half-made state: on bad input the session keeps what it had and
-// reports the error. One step of the simulation per Advance(), so N frames are N steps whatever the
-// frame rate (the screenshot mode's determinism).
+// Holds the scene's simulation (a registered scene, or a RUBE scene file opened as it is), its camera, the
+// driver's keys, pause and single step, the mouse joint, and the effects configuration in force. Opening
+// another scene or changing the configuration never leaves a half-made state: on bad input the session keeps
+// what it had and reports the error. One step of the simulation per Advance(), so N frames are N steps
+// whatever the frame rate (the screenshot mode's determinism).
 #pragma once
 
 #include "contactfx/draw/camera.h"
@@ -32,10 +32,17 @@ public:
     /// own effects. Throws InputError and keeps the current scene (and the chosen configuration) on bad
     /// input.
     void Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config = std::nullopt);
+    /// Opens the RUBE scene file `file` as `contactfx run FILE` does: no scripted drive or per-step action,
+    /// the whole world in view, 60 Hz, with the configuration chosen (see Open), else the default preset.
+    /// Entry() is then the file's (name: the file name; title and file: its absolute path). Throws
+    /// InputError naming the file and keeps the current scene on bad input.
+    void OpenFile(const std::filesystem::path& file,
+                  const std::optional<EffectsConfig>& config = std::nullopt);
     /// Opens the current scene again from its file, with the effects configuration in force.
     void Restart();
     /// Opens the registered scene `step` places after the current one in Scenes() order (negative:
-    /// before), wrapping around, with the configuration chosen (see Open), else its own effects. Throws
+    /// before), wrapping around (from a scene file: the first registered scene, or with a negative step
+    /// the last, counts as one place), with the configuration chosen (see Open), else its own effects. Throws
     /// InputError and keeps the scene on bad input.
     void OpenNeighbour(int step);
     /// Launches a steel ball (material "steel" when the effects have it) from the top left of the view
@@ -79,8 +86,17 @@ public:
     bool followCar = false;
 
 private:
+    /// A scene file's entry and the text its views show.
+    struct FileScene
+    {
+        std::string name;
+        std::string path; ///< absolute
+        SceneEntry entry;
+    };
+
     std::filesystem::path m_scenesDir;
-    const SceneEntry* m_entry = nullptr;
+    const SceneEntry* m_entry = nullptr; ///< a registered entry, or m_file's
+    std::unique_ptr<FileScene> m_file;   ///< the scene file last opened; null: none was
     std::unique_ptr<Simulation> m_simulation;
     /// The configuration the user chose (--effects, an applied edit): every scene opened uses it.
     std::optional<EffectsConfig> m_chosenConfig;

@@ -169,8 +169,28 @@ TEST(TestbedFlags, ParseErrorsNameTheCommandLineAndTheFlag)
     ExpectRefused(RunTestbed("--frames 1 --frames 2"), {frames + "given more than once"});
     ExpectRefused(RunTestbed("--frames 1 --no-such-flag"),
                   {std::string(kCommandLine) + ": --no-such-flag: unknown flag"});
-    ExpectRefused(RunTestbed("--frames 1 stray"),
+    ExpectRefused(RunTestbed("--frames 1 scene.json stray"),
                   {std::string(kCommandLine) + ": stray: unexpected argument"});
+}
+
+// A RUBE file of the user's own is opened as it is (session_test.cpp has what it opens); it takes the
+// place of --scene, and one that cannot be read is refused before any window opens.
+TEST(TestbedFlags, ASceneFileOpensInsteadOfARegisteredScene)
+{
+    const std::filesystem::path dir = ScratchDir("testbed_scene_file_flag");
+    const std::filesystem::path shot = dir / "shot.png";
+    const std::string file = Scene("grinder.json");
+    ExpectRefused(
+        RunTestbed(file + " --scene grinder --frames 1 --screenshot " + shot.string()),
+        {std::string(kCommandLine) + ": scene: give either a scene file or --scene NAME, not both"});
+    const std::filesystem::path missing = dir / "missing.json";
+    ExpectRefused(RunTestbed(missing.string() + " --frames 1 --screenshot " + shot.string()),
+                  {missing.string()});
+    EXPECT_FALSE(std::filesystem::exists(shot));
+
+    const CliResult result = RunTestbedOnXvfb(file + " --frames 30 --screenshot " + shot.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_EQ(FileText(shot).substr(1, 3), "PNG");
 }
 
 TEST(TestbedFlags, NoDisplayIsAClearError)

@@ -390,3 +390,66 @@ TEST(TestbedEvents, DescribeNamesTypePairAndMeasure)
 }
 
 } // namespace cfx::testbed
+
+namespace cfx::testbed
+{
+
+// A RUBE file of the user's own opens as `contactfx run FILE` runs it: no drive, the default preset, the
+// whole world in view; a bad one is reported with its name and leaves the scene on show as it was.
+TEST(TestbedSceneFile, OpensAUsersSceneFileAsItIsAndKeepsTheSceneOnABadOne)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    const std::filesystem::path file = kScenesDir / "rockslide.json";
+    session.OpenFile(file);
+    EXPECT_EQ(session.Entry().name, "rockslide.json");
+    EXPECT_EQ(session.Entry().file, std::filesystem::absolute(file).lexically_normal().string());
+    EXPECT_TRUE(session.Entry().view.wholeWorld);
+    EXPECT_EQ(session.Entry().beforeStep, nullptr); // rockslide's registered action puts rocks back
+    EXPECT_EQ(session.Sim().GetEffects().Config(), DefaultPreset());
+    opened.Advance(5);
+    EXPECT_EQ(session.Sim().Steps(), 5u);
+
+    const std::filesystem::path dir = test::ScratchDir("testbed_scene_file");
+    const std::filesystem::path bad = dir / "bad.json";
+    std::FILE* handle = std::fopen(bad.c_str(), "w");
+    ASSERT_NE(handle, nullptr);
+    std::fputs("{\"body\": 3}", handle);
+    std::fclose(handle);
+    try
+    {
+        session.OpenFile(bad);
+        ADD_FAILURE() << "a scene file whose body is not a list was opened";
+    }
+    catch (const InputError& error)
+    {
+        EXPECT_NE(std::string(error.what()).find(bad.string()), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(session.Entry().name, "rockslide.json");
+    EXPECT_EQ(session.Sim().Steps(), 5u);
+
+    // Restart opens the file again; the chosen configuration goes with it.
+    EffectsConfig tutorial = TutorialPreset();
+    session.OpenFile(file, tutorial);
+    opened.Advance(3);
+    session.Restart();
+    EXPECT_EQ(session.Entry().name, "rockslide.json");
+    EXPECT_EQ(session.Sim().Steps(), 0u);
+    EXPECT_EQ(session.Sim().GetEffects().Config(), tutorial);
+}
+
+// From a scene file the brackets go to the first registered scene, or back to the last.
+TEST(TestbedSceneFile, TheNeighboursOfASceneFileAreTheEndsOfTheList)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    const std::span<const SceneEntry> scenes = Scenes();
+    session.OpenFile(kScenesDir / "grinder.json");
+    session.OpenNeighbour(1);
+    EXPECT_EQ(&session.Entry(), &scenes.front());
+    session.OpenFile(kScenesDir / "grinder.json");
+    session.OpenNeighbour(-1);
+    EXPECT_EQ(&session.Entry(), &scenes.back());
+}
+
+} // namespace cfx::testbed
