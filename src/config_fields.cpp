@@ -156,6 +156,14 @@ const std::array kParticleTypeFields{
              .step = 0.001f},
     Field<P>{
         .name = "restitution", .member = &P::restitution, .range = kUnit, .doc = "bounce", .step = 0.01f},
+    Field<P>{.name = "restSpeed",
+             .member = &P::restSpeed,
+             .unit = "m/s",
+             .range = {0.0f, 1000.0f},
+             .doc =
+                 "a hit approaching slower than this does not bounce; the smaller of this and the fixture's "
+                 "restitution threshold counts, as Box2D mixes them",
+             .step = 0.05f},
     Field<P>{.name = "friction",
              .member = &P::friction,
              .range = {0.0f, 1000.0f},

@@ -529,9 +529,11 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.leaving = leaving.LengthSquared() > 0.0f ? leaving : slip;
     query.otherBody = other.GetBody();
     query.radius = type.radius;
-    const Solids solids{&context.particleBodies, type.categoryBits, type.maskBits};
+    // The tutorial's drop starts inside a wheel its particles do not collide with, as the tutorial does.
+    const bool tutorialDrop = rule.placement == SpawnPlacement::tutorialDrop;
+    const Solids solids{&context.particleBodies, type.categoryBits, type.maskBits, !tutorialDrop};
     SpawnPoint start;
-    if (rule.placement == SpawnPlacement::tutorialDrop) // looks 1 m each way, as documented
+    if (tutorialDrop) // looks 1 m each way, as documented
     {
         start = FindTutorialDropPoint(context.world, query, solids);
     }

@@ -39,6 +39,7 @@ struct TypeParams
     float gravityScale;
     float drag;
     float restitution;
+    float restSpeed; // m/s
     float friction;
     float radius;
     float lifeRate; // life lost per second
@@ -49,10 +50,6 @@ struct TypeParams
     bool collide;
     bool bodyBacked;
 };
-
-// Below this approach speed (m/s) a hit does not bounce: particles come to rest instead of jittering.
-// Box2D mixes it with the fixture's restitution threshold by taking the smaller; so do pool particles.
-constexpr float kRestSpeed = 0.5f;
 
 constexpr unsigned kMaxThreads = 8;
 // Runs a split step is cut into, per thread and at most (see StepJob).
@@ -262,7 +259,7 @@ struct ParticleSystem::Impl
         fixtureDef.density = params.density;
         fixtureDef.friction = params.friction;
         fixtureDef.restitution = params.restitution;
-        fixtureDef.restitutionThreshold = kRestSpeed;
+        fixtureDef.restitutionThreshold = params.restSpeed;
         fixtureDef.filter.categoryBits = params.categoryBits;
         fixtureDef.filter.maskBits = params.collide ? params.maskBits : 0;
         created->CreateFixture(&fixtureDef);
@@ -377,6 +374,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
         params.gravityScale = def.gravityScale;
         params.drag = def.drag;
         params.restitution = def.restitution;
+        params.restSpeed = def.restSpeed;
         params.friction = def.friction;
         params.radius = def.radius;
         params.lifeRate = 1.0f / def.lifetime;
@@ -618,8 +616,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         step.restVelocity =
             b2Vec2((0.0f + step.gravityDelta.x) * step.damping, (0.0f + step.gravityDelta.y) * step.damping);
         step.lifeLoss = dt * params.lifeRate;
-        step.side = particles::ParticleSide{params.radius, params.restitution,  params.friction,
-                                            kRestSpeed,    params.categoryBits, params.maskBits};
+        step.side = particles::ParticleSide{params.radius,    params.restitution,  params.friction,
+                                            params.restSpeed, params.categoryBits, params.maskBits};
         step.hitSpeed = params.hitSpeed;
         step.bodyBacked = params.bodyBacked;
         step.sweeps = params.collide && !params.bodyBacked;

@@ -29,6 +29,8 @@ ParticleTypeDef TutorialType(const char* name, Color color)
     type.radius = 0.01f;
     type.density = 1.0f;
     type.friction = 2.0f;
+    type.restSpeed =
+        1.0f; // Box2D 2.3's b2_velocityThreshold, the tutorial's (2.4 mixes in the ground's 1 m/s)
     type.categoryBits = 0x0002;
     type.maskBits = 0x0001;
     type.colorStart = color;

@@ -24,11 +24,12 @@ namespace
 {
 
 // Whether a start's disc test looks at `fixture`: one of `solids`, or a non-sensor fixture of `passable`
-// (the other body of the contact, null for none), whatever the particle's filter says: particles start
-// beside it, not inside it, where they would seem to come out of it.
+// (the other body of the contact, null for none) whatever the particle's filter says, unless `solids` wants
+// it filtered as any other (Solids::otherBodyWhateverFilter).
 bool Looked(const Solids& solids, const b2Body* passable, const b2Fixture& fixture)
 {
-    return (fixture.GetBody() == passable && !fixture.IsSensor()) || solids.Include(fixture);
+    return (solids.otherBodyWhateverFilter && fixture.GetBody() == passable && !fixture.IsSensor()) ||
+           solids.Include(fixture);
 }
 
 // Whether a disc is inside any solid fixture: it overlaps one (skins of polygons and edges included), or

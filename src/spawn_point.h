@@ -45,6 +45,11 @@ struct Solids
     const BodyFilter* ignore = nullptr;
     std::uint16_t categoryBits = 0xFFFF; ///< the particle's (default: every fixture that collides at all)
     std::uint16_t maskBits = 0xFFFF;
+    /// Whether the contact's other body (SpawnQuery::otherBody) is kept out of whatever the filter says:
+    /// particles then start beside it, not inside it, where they would seem to come out of it. False: only
+    /// where the filter meets it, like any fixture (the tutorial's drop, which starts particles inside the
+    /// car's wheel or body standing on the contact when they do not collide with it, as the tutorial does).
+    bool otherBodyWhateverFilter = true;
 
     bool Include(const b2Fixture& fixture) const
     {
@@ -93,7 +98,8 @@ SpawnPoint TutorialDropPoint(const b2World& world, b2Vec2 point);
 /// clear (DiscIsClear), else the drop at x moved along the ground, the side query.leaving.x points to
 /// first, by growing steps up to query.searchDistance each way. The tutorial's own drop lands
 /// inside the wheel or the car's body that stands on the contact (its particles do not collide with
-/// them); this one lands beside it. `outside` false when no clear drop was found.
+/// them): so does this one with solids.otherBodyWhateverFilter false; with it true, it lands beside
+/// them. `outside` false when no clear drop was found.
 SpawnPoint FindTutorialDropPoint(const b2World& world, const SpawnQuery& query, const Solids& solids);
 
 /// Whether a disc is inside none of `solids`: it overlaps none (polygon

@@ -55,8 +55,12 @@ struct ParticleTypeDef
 
     // Collision with the world's fixtures (never with other particles).
     bool collide = true;
-    float radius = 0.02f;                ///< m, [0.001, 10]
-    float restitution = 0.3f;            ///< [0, 1]: bounce
+    float radius = 0.02f;     ///< m, [0.001, 10]
+    float restitution = 0.3f; ///< [0, 1]: bounce
+    /// m/s, [0, 1000]: a hit approaching the surface slower than this does not bounce (the particle comes to
+    /// rest instead of jittering). Mixed with the fixture's restitution threshold by taking the smaller, as
+    /// Box2D mixes two fixtures' (the body backend sets it as its fixtures' restitutionThreshold).
+    float restSpeed = 0.5f;
     float friction = 0.5f;               ///< [0, 1000]: Coulomb friction on each hit
     std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these
     std::uint16_t maskBits = 0x0001;     ///< ... and its categoryBits are in these

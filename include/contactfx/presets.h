@@ -8,17 +8,17 @@ namespace cfx
 
 /// The tutorial's rules: materials steel, rubber, concrete, dirt; rules steel+concrete -> sparks,
 /// rubber+concrete -> smoke, steel+dirt and rubber+dirt -> dirt; intensity |vA - vB| * fA * fB at the
-/// first manifold point, threshold 1, one particle per contact per step, particles dropped onto the
-/// static ground below the contact (beside the wheel or body standing there instead of inside it, the
-/// one change: SpawnPlacement::tutorialDrop), Box2D bodies of radius 0.01, at most 100, oldest recycled. Life
-/// losses per step are expressed as lifetimes at the tutorial's 60 Hz. Fixtures without a `material`
-/// property get the tutorial's guesses as assignments: steel on bodies heavier than 3 kg, concrete on
-/// static fixtures with friction > 0.5, dirt on static ones with friction < 0.5, rubber on other dynamic
-/// bodies heavier than 0.4 kg.
-/// Where it still differs from the tutorial's own code, besides the placement above: a particle body
-/// bounces off hits down to 0.5 m/s, as pool particles do (the tutorial's Box2D: 1 m/s); a contact the
-/// application disabled in PreSolve emits nothing (the tutorial's loop only looks at the point count);
-/// particles are drawn in contactfx's style (docs/rendering.md), not as the tutorial's 8-pixel points.
+/// first manifold point, threshold 1, one particle per contact per step, particles dropped 0.05 m above
+/// the static ground below the contact (SpawnPlacement::tutorialDrop: inside the tutorial car's wheel or
+/// body standing there, which its particles pass through, as in the tutorial; beside a wheel or body they
+/// would collide with), Box2D bodies of radius 0.01 that stop bouncing below 1 m/s (Box2D 2.3's
+/// threshold), at most 100, oldest recycled. Life losses per step are expressed as lifetimes at the
+/// tutorial's 60 Hz. Fixtures without a `material` property get the tutorial's guesses as assignments:
+/// steel on bodies heavier than 3 kg, concrete on static fixtures with friction > 0.5, dirt on static ones
+/// with friction < 0.5, rubber on other dynamic bodies heavier than 0.4 kg.
+/// Where it still differs from the tutorial's own code: a contact the application disabled in PreSolve
+/// emits nothing (the tutorial's loop only looks at the point count); particles are drawn in contactfx's
+/// style (docs/rendering.md), not as the tutorial's 8-pixel points.
 EffectsConfig TutorialPreset();
 
 /// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction

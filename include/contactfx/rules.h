@@ -42,8 +42,9 @@ enum class SpawnPlacement : std::uint8_t
     /// when no start near the contact is free, the particle is not spawned (EffectsStats::spawnRejected).
     surface,
     /// The tutorial's: x of the contact point, y of the highest static fixture under it plus 0.05 m;
-    /// when a wheel or body standing there makes that start inside it, the same drop at x moved along
-    /// the ground, trailing side first, up to 1 m each way, else not spawned.
+    /// when that start is inside a fixture the particle collides with (the other body of the contact is
+    /// not one when the particle's collision filter passes through it, as the tutorial's car and wheels),
+    /// the same drop at x moved along the ground, trailing side first, up to 1 m each way, else not spawned.
     tutorialDrop,
 };
 
