@@ -71,6 +71,7 @@ Scenario SelectScenario(const RunOptions& options)
     }
     else
     {
+        CheckNotASceneName(options.scene);
         scenario.def.scene = options.scene;
         scenario.def.config = SelectConfig(options);
     }

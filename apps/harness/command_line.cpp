@@ -38,4 +38,16 @@ void CheckOutputFile(const std::string& flag, const std::string& file)
     }
 }
 
+bool SameFile(const std::filesystem::path& a, const std::filesystem::path& b)
+{
+    if (a.empty() || b.empty())
+    {
+        return false;
+    }
+    std::error_code error; // a missing file is no other file
+    return std::filesystem::absolute(a, error).lexically_normal() ==
+               std::filesystem::absolute(b, error).lexically_normal() ||
+           std::filesystem::equivalent(a, b, error);
+}
+
 } // namespace cfx

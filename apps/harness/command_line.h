@@ -1,6 +1,7 @@
 // contactfx harness: checks of command-line outputs shared by the CLI and the testbed.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace cfx
@@ -18,5 +19,9 @@ void CheckExtension(const std::string& flag, const std::string& file, const std:
 /// Throws InputError (kCommandLine, `flag`) naming `file` when OutputFileProblem (contactfx/files) refuses
 /// it as an output: a folder, a device, a read-only file, a missing or unwritable folder.
 void CheckOutputFile(const std::string& flag, const std::string& file);
+
+/// Whether `a` and `b` name one file: the same path once made absolute and normal, or existing files that
+/// are one (a symbolic or hard link). Empty names name no file.
+bool SameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
 } // namespace cfx

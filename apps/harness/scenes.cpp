@@ -3,6 +3,7 @@
 #include "harness/scenes.h"
 
 #include "contactfx/scene/effects_json.h"
+#include "harness/command_line.h"
 
 #include <array>
 #include <box2d/b2_body.h>
@@ -178,6 +179,16 @@ std::filesystem::path BundledScenesDir()
         return std::filesystem::path(CONTACTFX_SCENES_FROM_BIN);
     }
     return (program.parent_path() / CONTACTFX_SCENES_FROM_BIN).lexically_normal();
+}
+
+void CheckNotASceneName(const std::string& file)
+{
+    std::error_code error;
+    if (FindScene(file) != nullptr && !std::filesystem::exists(file, error))
+    {
+        throw InputError(kCommandLine, "scene",
+                         "no file \"" + file + "\"; for the registered scene give --scene " + file);
+    }
 }
 
 SimulationDef SceneSimulationDef(const SceneEntry& entry, const std::filesystem::path& scenesDir)

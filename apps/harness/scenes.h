@@ -53,6 +53,10 @@ const SceneEntry* FindScene(std::string_view name);
 /// "tutorial, grinder, ..." for help texts and error messages.
 std::string SceneNames();
 
+/// Throws InputError (file "<command line>", path "scene") when `file`, given as a scene file, names no
+/// file but is a registered scene's name (`contactfx run grinder`, where --scene grinder was meant).
+void CheckNotASceneName(const std::string& file);
+
 /// The folder of the bundled scenes: $CONTACTFX_SCENES when set and not empty, else
 /// <folder of the running program>/../share/contactfx/scenes (where both the build tree and an installed
 /// prefix keep them). Never depends on the source tree.

@@ -56,10 +56,32 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
     effectsDef.config = config; // copied before the old effects go: `config` may be theirs
     effectsDef.seed = m_seed;
     effectsDef.particles = m_particleOptions;
+    // Fixtures the scene file does not name (a ball the testbed launched) keep their material by name.
+    std::vector<std::pair<b2Fixture*, std::string>> given;
+    const EffectsConfig& old = m_effects->Config();
+    for (b2Body* body = m_scene.world->GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
+        {
+            const MaterialId material = m_effects->Material(fixture);
+            if (material.IsValid())
+            {
+                given.emplace_back(fixture, old.materials[material.index]);
+            }
+        }
+    }
     // The old effects put the world's listeners back before the new ones install theirs.
     m_effects.reset();
     m_effects = std::make_unique<Effects>(*m_scene.world, effectsDef);
     AssignSceneMaterials(m_scene, *m_effects, m_sceneFile);
+    for (const auto& [fixture, name] : given)
+    {
+        const MaterialId material = m_effects->FindMaterial(name);
+        if (!m_effects->Material(fixture).IsValid() && material.IsValid())
+        {
+            m_effects->SetMaterial(fixture, material);
+        }
+    }
 }
 
 std::span<const EffectEvent> Simulation::EndScrapes()

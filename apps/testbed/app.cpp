@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <imgui.h>
+#include <iostream>
 
 namespace cfx::testbed
 {
@@ -286,6 +287,10 @@ int RunTestbed(const Options& options)
     else
     {
         session.OpenFile(options.sceneFile, config);
+    }
+    for (const Diagnostic& warning : session.Warnings()) // as `contactfx run` warns ("...: warning: ...")
+    {
+        std::cerr << "contactfx-testbed: " << warning.ToString() << '\n';
     }
 
     const bool headless = options.frames > 0;

@@ -1,6 +1,7 @@
 #include "effects_editor.h"
 
 #include "contactfx/scene/effects_json.h"
+#include "harness/command_line.h"
 
 #include <algorithm>
 
@@ -77,16 +78,23 @@ void EffectsEditor::Apply(Session& session)
     }
 }
 
-void EffectsEditor::Save()
+void EffectsEditor::Save(const Session& session)
 {
     if (!DraftIsValid("not saved"))
     {
         return;
     }
+    if (SameFile(savePath, session.SceneFile()))
+    {
+        message = savePath + ": is the scene file on show: not overwritten";
+        messageIsError = true;
+        return;
+    }
     try
     {
         SaveEffectsFile(draft, savePath);
-        message = "saved " + savePath;
+        std::error_code error;
+        message = "saved " + std::filesystem::absolute(savePath, error).lexically_normal().string();
         messageIsError = false;
     }
     catch (const InputError& error)

@@ -183,7 +183,7 @@ bool EditFields(S& value, std::span<const Field<S>> fields, const EffectsConfig&
             field.member);
         if (ImGui::IsItemHovered() && !field.doc.empty())
         {
-            ImGui::SetTooltip("%.*s", static_cast<int>(field.doc.size()), field.doc.data());
+            WrappedTooltip(field.doc);
         }
     }
     return finished;
@@ -397,21 +397,18 @@ void EffectsPanel(Session& session, EffectsEditor& editor)
     ImGui::SameLine();
     if (ImGui::Button("Save as"))
     {
-        editor.Save();
+        editor.Save(session);
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputText("##path", &editor.savePath);
     if (!editor.message.empty())
     {
-        const ImVec4 color =
-            editor.messageIsError ? ImVec4(1.0f, 0.4f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f);
-        ImGui::TextColored(color, "%s", editor.message.c_str());
+        WrappedText(editor.messageIsError ? kErrorColour : kDoneColour, editor.message);
     }
     for (const Diagnostic& problem : editor.problems)
     {
-        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s: %s", problem.path.c_str(),
-                           problem.message.c_str());
+        WrappedText(kErrorColour, problem.path + ": " + problem.message);
     }
 }
 

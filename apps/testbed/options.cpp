@@ -14,22 +14,19 @@ namespace cfx::testbed
 namespace
 {
 
-/// The screenshot must not replace the effects config it was made with: refused as the command line
-/// program refuses an output that is one of its inputs (apps/contactfx/outputs.cpp), also when the two
-/// names are one file through a symbolic or hard link.
-void CheckNotTheEffectsFile(const Options& options)
+/// The screenshot must not replace a file the testbed reads (the scene file, the effects config): refused as
+/// the command line program refuses an output that is one of its inputs (apps/contactfx/outputs.cpp), also
+/// when the two names are one file through a symbolic or hard link.
+void CheckNotAnInput(const Options& options)
 {
-    if (options.effects.empty())
+    for (const std::string* input : {&options.sceneFile, &options.effects})
     {
-        return;
-    }
-    std::error_code error; // either file missing: not the same file (a missing effects file fails later)
-    if (options.screenshot == options.effects ||
-        std::filesystem::equivalent(options.screenshot, options.effects, error))
-    {
-        throw InputError(kCommandLine, "--screenshot",
-                         options.screenshot + ": is the input file \"" + options.effects +
-                             "\" of this command: not overwritten");
+        if (SameFile(options.screenshot, *input))
+        {
+            throw InputError(kCommandLine, "--screenshot",
+                             options.screenshot + ": is the input file \"" + *input +
+                                 "\" of this command: not overwritten");
+        }
     }
 }
 
@@ -61,6 +58,7 @@ void CheckOptions(const Options& options, bool framesGiven)
     {
         throw InputError(kCommandLine, "scene", "give either a scene file or --scene NAME, not both");
     }
+    CheckNotASceneName(options.sceneFile);
     if (options.sceneFile.empty() && FindScene(SceneName(options)) == nullptr)
     {
         throw InputError(kCommandLine, "--scene",
@@ -73,7 +71,7 @@ void CheckOptions(const Options& options, bool framesGiven)
             throw InputError(kCommandLine, "--screenshot", "needs --frames N (the frame to save)");
         }
         CheckOutputFile("--screenshot", options.screenshot);
-        CheckNotTheEffectsFile(options);
+        CheckNotAnInput(options);
         CheckExtension("--screenshot", options.screenshot, ".png");
     }
 }

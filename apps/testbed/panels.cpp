@@ -7,6 +7,22 @@
 namespace cfx::testbed
 {
 
+void WrappedText(const std::array<float, 3>& colour, const std::string& text)
+{
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(colour[0], colour[1], colour[2], 1.0f));
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+void WrappedTooltip(std::string_view text)
+{
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(35.0f * ImGui::GetFontSize());
+    ImGui::TextUnformatted(text.data(), text.data() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 void StepTimeWindow::Record(const Simulation::StepTimes& times)
 {
     m_times[m_next] = times;

@@ -15,10 +15,20 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cfx::testbed
 {
+
+/// Colours of the panels' messages (r, g, b), and `text` in one, wrapped at the panel's edge (a long error
+/// names a file and a JSON path: cut at the edge, its end was lost).
+inline constexpr std::array<float, 3> kErrorColour{1.0f, 0.4f, 0.4f};
+inline constexpr std::array<float, 3> kWarningColour{1.0f, 0.8f, 0.3f};
+inline constexpr std::array<float, 3> kDoneColour{0.5f, 0.9f, 0.5f};
+void WrappedText(const std::array<float, 3>& colour, const std::string& text);
+/// A tooltip of `text` wrapped at about 35 characters' width (a field's doc line ran off the window).
+void WrappedTooltip(std::string_view text);
 
 /// What the world view draws.
 struct DrawToggles

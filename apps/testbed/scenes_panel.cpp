@@ -7,18 +7,16 @@ namespace cfx::testbed
 
 void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
 {
-    if (FindScene(session.Entry().name) != &session.Entry()) // a scene file: listed first, selected
+    for (const SceneEntry* entry : session.Listed())
     {
-        ImGui::Selectable(std::string(session.Entry().name).c_str(), true);
-    }
-    for (const SceneEntry& entry : Scenes())
-    {
-        const bool current = &entry == &session.Entry();
-        if (ImGui::Selectable(std::string(entry.name).c_str(), current) && !current)
+        const bool current = entry == &session.Entry();
+        const bool file = FindScene(entry->name) != entry; // the scene file: listed first
+        const std::string label = std::string(entry->name) + (file ? "  (file)" : "");
+        if (ImGui::Selectable(label.c_str(), current) && !current)
         {
             try
             {
-                session.Open(entry);
+                session.Open(*entry);
                 error.clear();
             }
             catch (const InputError& problem)
@@ -28,13 +26,17 @@ void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
         }
         if (ImGui::IsItemHovered())
         {
-            ImGui::SetTooltip("%s", std::string(entry.title).c_str());
+            WrappedTooltip(entry->title);
         }
     }
     ImGui::TextWrapped("%s", std::string(session.Entry().title).c_str());
+    for (const Diagnostic& warning : session.Warnings())
+    {
+        WrappedText(kWarningColour, warning.ToString());
+    }
     if (!error.empty())
     {
-        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error.c_str());
+        WrappedText(kErrorColour, error);
     }
 
     ImGui::Separator();
@@ -69,7 +71,7 @@ void ScenesPanel(Session& session, DrawToggles& toggles, std::string& error)
     ImGui::Checkbox("Joints", &toggles.joints);
     ImGui::SameLine();
     ImGui::Checkbox("Particles", &toggles.particles);
-    ImGui::Checkbox("Events", &toggles.events);
+    ImGui::Checkbox("Events##rings", &toggles.events); // not the Events panel's header
     ImGui::SameLine();
     ImGui::Checkbox("Scale bar", &toggles.scaleBar);
     if (ImGui::TreeNode("Debug drawing"))

@@ -1,13 +1,28 @@
 #include "session.h"
 
 #include <algorithm>
+#include <array>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
+#include <charconv>
 
 namespace cfx::testbed
 {
+
+namespace
+{
+
+// A rate as its file has it: "59.99", not 59.9900016784668.
+std::string RateText(float hz)
+{
+    std::array<char, 32> text{};
+    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), hz);
+    return error == std::errc() ? std::string(text.data(), end) : std::to_string(hz);
+}
+
+} // namespace
 
 Session::~Session()
 {
@@ -57,21 +72,48 @@ void Session::OpenFile(const std::filesystem::path& file, const std::optional<Ef
     m_file = std::move(scene);
 }
 
+std::vector<Diagnostic> Session::Warnings() const
+{
+    std::vector<Diagnostic> warnings = m_simulation->GetScene().warnings;
+    const float sceneHz = m_simulation->GetScene().settings.stepsPerSecond;
+    const float testbedHz = SimulationDef{}.hz; // Open keeps the default rate
+    if (m_file && m_entry == &m_file->entry && sceneHz != testbedHz)
+    {
+        Diagnostic warning{m_file->path, "stepsPerSecond",
+                           "the scene steps at " + RateText(sceneHz) + " Hz; the testbed steps at " +
+                               RateText(testbedHz) + " Hz"};
+        warning.warning = true;
+        warnings.push_back(std::move(warning));
+    }
+    return warnings;
+}
+
 void Session::Restart()
 {
     Open(*m_entry, m_simulation->GetEffects().Config());
 }
 
+std::vector<const SceneEntry*> Session::Listed() const
+{
+    std::vector<const SceneEntry*> listed;
+    if (m_file)
+    {
+        listed.push_back(&m_file->entry);
+    }
+    for (const SceneEntry& entry : Scenes())
+    {
+        listed.push_back(&entry);
+    }
+    return listed;
+}
+
 void Session::OpenNeighbour(int step)
 {
-    const std::span<const SceneEntry> scenes = Scenes();
-    const auto count = static_cast<long>(scenes.size());
-    const auto registered = std::find_if(scenes.begin(), scenes.end(),
-                                         [this](const SceneEntry& entry) { return &entry == m_entry; });
-    // A scene file sits just before the first registered scene and just after the last.
-    const long current = registered != scenes.end() ? registered - scenes.begin() : step > 0 ? -1 : count;
+    const std::vector<const SceneEntry*> listed = Listed();
+    const auto count = static_cast<long>(listed.size());
+    const long current = std::find(listed.begin(), listed.end(), m_entry) - listed.begin();
     const long next = ((current + step) % count + count) % count;
-    Open(scenes[static_cast<std::size_t>(next)]);
+    Open(*listed[static_cast<std::size_t>(next)]);
 }
 
 void Session::Launch()
@@ -165,9 +207,13 @@ void Session::SetKeys(bool left, bool right, bool brake)
 
 void Session::Zoom(float factor, b2Vec2 anchor)
 {
-    constexpr float kMinPixelsPerMetre = 0.5f;
-    constexpr float kMaxPixelsPerMetre = 2000.0f;
-    const float ppm = std::clamp(m_camera.pixelsPerMetre / factor, kMinPixelsPerMetre, kMaxPixelsPerMetre);
+    constexpr float kMinPixelsPerMetre = 1.0e-3f; // a 1,000 km level on 1,000 px
+    constexpr float kMaxPixelsPerMetre = 1.0e5f;  // a 1 cm level on 1,000 px
+    // A view fitted to a world outside the limits (40 km across, 5 cm) keeps zooming the way asked, toward
+    // the limits, never jumping to one (zooming out of 0.02 px/m went to 0.5).
+    const float current = m_camera.pixelsPerMetre;
+    const float ppm = std::clamp(current / factor, std::min(kMinPixelsPerMetre, current),
+                                 std::max(kMaxPixelsPerMetre, current));
     const float applied = m_camera.pixelsPerMetre / ppm;
     m_camera.center = anchor + applied * (m_camera.center - anchor);
     m_camera.pixelsPerMetre = ppm;

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cfx::testbed
 {
@@ -40,10 +41,11 @@ public:
                   const std::optional<EffectsConfig>& config = std::nullopt);
     /// Opens the current scene again from its file, with the effects configuration in force.
     void Restart();
-    /// Opens the registered scene `step` places after the current one in Scenes() order (negative:
-    /// before), wrapping around (from a scene file: the first registered scene, or with a negative step
-    /// the last, counts as one place), with the configuration chosen (see Open), else its own effects. Throws
-    /// InputError and keeps the scene on bad input.
+    /// The scenes to choose from, in order: the scene file last opened (if any), then Scenes().
+    std::vector<const SceneEntry*> Listed() const;
+    /// Opens the scene `step` places after the current one in Listed() order (negative: before), wrapping
+    /// around, with the configuration chosen (see Open), else its own effects. Throws InputError and keeps
+    /// the scene on bad input.
     void OpenNeighbour(int step);
     /// Launches a steel ball (material "steel" when the effects have it) from the top left of the view
     /// towards the middle of its bottom edge, fast enough to strike sparks.
@@ -75,6 +77,11 @@ public:
     Simulation& Sim() { return *m_simulation; }
     const Simulation& Sim() const { return *m_simulation; }
     const SceneEntry& Entry() const { return *m_entry; }
+    /// What the scene on show loaded with but may not be what its file meant (Scene::warnings: unknown keys,
+    /// dropped vertices), and for a scene file whose stepsPerSecond is not the testbed's 60 Hz, that.
+    std::vector<Diagnostic> Warnings() const;
+    /// The RUBE file the scene on show was read from.
+    std::filesystem::path SceneFile() const { return m_scenesDir / m_entry->file; }
     const cfx::Camera& Camera() const { return m_camera; }
     /// Effect events of the recent steps (cleared when a simulation is opened).
     const EventLog& Events() const { return m_events; }

@@ -101,6 +101,14 @@ TEST(CliScene, SceneFileAndSceneNameExcludeEachOther)
     result = RunCli("run --seconds 1");
     EXPECT_EQ(result.exitCode, 1) << result.output;
     EXPECT_NE(result.output.find("--scene NAME"), std::string::npos) << result.output;
+    // A registered name given as the file (a trial's `contactfx-testbed grinder`): the hint, not only
+    // "cannot open for reading".
+    result = RunCli("run grinder --seconds 1");
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    EXPECT_NE(result.output.find("<command line>: scene: no file \"grinder\"; for the registered scene give "
+                                 "--scene grinder"),
+              std::string::npos)
+        << result.output;
 }
 
 } // namespace cfx::test

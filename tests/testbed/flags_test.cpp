@@ -191,6 +191,17 @@ TEST(TestbedFlags, ASceneFileOpensInsteadOfARegisteredScene)
     const CliResult result = RunTestbedOnXvfb(file + " --frames 30 --screenshot " + shot.string());
     ASSERT_EQ(result.exitCode, 0) << result.output;
     EXPECT_EQ(FileText(shot).substr(1, 3), "PNG");
+
+    // The screenshot never replaces the scene file: named .png, or through a link (a trial lost its level).
+    const std::filesystem::path level = dir / "level.png";
+    std::filesystem::copy_file(file, level);
+    std::filesystem::create_symlink(level, dir / "link.png");
+    for (const std::filesystem::path& screenshot : {level, dir / "link.png"})
+    {
+        ExpectRefused(RunTestbed(level.string() + " --frames 3 --screenshot " + screenshot.string()),
+                      {"--screenshot", "is the input file", "not overwritten"});
+    }
+    EXPECT_TRUE(FileText(level) == FileText(file)) << "the level was replaced";
 }
 
 TEST(TestbedFlags, NoDisplayIsAClearError)

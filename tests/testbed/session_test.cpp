@@ -2,6 +2,7 @@
 // following, zoom and pan), dragging bodies, and the live effects editor.
 #include "contactfx/scene/effects_json.h"
 #include "effects_editor.h"
+#include "keys.h"
 #include "mouse_drag.h"
 #include "scenes_dir.h"
 #include "session.h"
@@ -311,20 +312,54 @@ TEST(TestbedEffectsEditor, SavesTheDraftAsAnEffectsConfigFile)
     editor.draft.rules[0].particleType = "smoke";
     const std::filesystem::path dir = test::ScratchDir("testbed_editor_save");
     editor.savePath = (dir / "edited.effects.json").string();
-    editor.Save();
+    editor.Save(opened.session);
     EXPECT_FALSE(editor.messageIsError) << editor.message;
     EXPECT_EQ(LoadEffectsFile(editor.savePath), editor.draft);
 
     editor.savePath = (dir / "missing" / "edited.effects.json").string();
-    editor.Save();
+    editor.Save(opened.session);
     EXPECT_TRUE(editor.messageIsError);
     EXPECT_NE(editor.message.find(editor.savePath), std::string::npos) << editor.message;
 
     editor.savePath = (dir / "invalid.effects.json").string();
     editor.draft.budget.capacity = 0;
-    editor.Save();
+    editor.Save(opened.session);
     EXPECT_TRUE(editor.messageIsError);
     EXPECT_FALSE(std::filesystem::exists(editor.savePath));
+}
+
+// Save as never writes over the scene on show: a trial saved its effects over its own level file (the same
+// name, relative or absolute), and the level was gone.
+TEST(TestbedEffectsEditor, DoesNotSaveOverTheSceneFileOnShow)
+{
+    const std::filesystem::path dir = test::ScratchDir("testbed_editor_save_scene");
+    const std::filesystem::path level = dir / "level.json";
+    std::filesystem::copy_file(kScenesDir / "grinder.json", level);
+    std::filesystem::create_symlink(level, dir / "link.json");
+    const std::string text = test::FileText(level);
+    Opened opened("grinder");
+    opened.session.OpenFile(level);
+    EffectsEditor editor;
+    editor.Follow(opened.session);
+    for (const std::filesystem::path& name : {level, dir / "." / "level.json", dir / "link.json"})
+    {
+        editor.savePath = name.string();
+        editor.Save(opened.session);
+        EXPECT_TRUE(editor.messageIsError) << name;
+        EXPECT_NE(editor.message.find("is the scene file on show: not overwritten"), std::string::npos)
+            << editor.message;
+    }
+    EXPECT_TRUE(test::FileText(level) == text) << "the level was replaced";
+    // A registered scene's bundled file neither.
+    opened.session.Open(*FindScene("grinder"));
+    editor.savePath = (kScenesDir / "grinder.json").string();
+    editor.Save(opened.session);
+    EXPECT_TRUE(editor.messageIsError);
+    // Elsewhere it saves, and says where.
+    editor.savePath = (dir / "fx.json").string();
+    editor.Save(opened.session);
+    EXPECT_FALSE(editor.messageIsError) << editor.message;
+    EXPECT_EQ(editor.message, "saved " + (dir / "fx.json").lexically_normal().string());
 }
 
 } // namespace cfx::testbed
@@ -438,18 +473,98 @@ TEST(TestbedSceneFile, OpensAUsersSceneFileAsItIsAndKeepsTheSceneOnABadOne)
     EXPECT_EQ(session.Sim().GetEffects().Config(), tutorial);
 }
 
-// From a scene file the brackets go to the first registered scene, or back to the last.
-TEST(TestbedSceneFile, TheNeighboursOfASceneFileAreTheEndsOfTheList)
+// The scene file stays listed first once opened, also after leaving it (a trial could not get back to its
+// level), and the brackets go through it and the registered scenes in that order.
+TEST(TestbedSceneFile, StaysListedFirstAndTheBracketsGoThroughIt)
 {
     Opened opened("grinder");
     Session& session = opened.session;
     const std::span<const SceneEntry> scenes = Scenes();
+    EXPECT_EQ(session.Listed().size(), scenes.size());
     session.OpenFile(kScenesDir / "grinder.json");
+    const SceneEntry* file = &session.Entry();
+    ASSERT_EQ(session.Listed().size(), scenes.size() + 1);
+    EXPECT_EQ(session.Listed().front(), file);
     session.OpenNeighbour(1);
     EXPECT_EQ(&session.Entry(), &scenes.front());
-    session.OpenFile(kScenesDir / "grinder.json");
+    session.OpenNeighbour(-1);
+    EXPECT_EQ(&session.Entry(), file) << "back to the file";
     session.OpenNeighbour(-1);
     EXPECT_EQ(&session.Entry(), &scenes.back());
+    session.OpenNeighbour(1);
+    EXPECT_EQ(&session.Entry(), file) << "the list wraps around through the file";
+    session.Open(scenes[1]);
+    session.Open(*session.Listed().front()); // chosen in the Scenes panel
+    EXPECT_EQ(&session.Entry(), file);
+    EXPECT_EQ(session.Sim().Steps(), 0u);
+}
+
+// What `contactfx run` warns of in a scene file, the testbed says too: unknown keys, and a step rate that
+// is not its own (a trial's level with "gravty" fell nowhere, silently).
+TEST(TestbedSceneFile, WarnsOfUnknownKeysAndAnotherStepRate)
+{
+    const std::filesystem::path dir = test::ScratchDir("testbed_scene_warnings");
+    const std::filesystem::path level = dir / "level.json";
+    std::string text = test::FileText(kScenesDir / "grinder.json");
+    const std::size_t gravity = text.find("\"gravity\"");
+    ASSERT_NE(gravity, std::string::npos);
+    text.replace(gravity, 9, "\"gravty\"");
+    const std::size_t rate = text.find("\"stepsPerSecond\"");
+    ASSERT_NE(rate, std::string::npos);
+    text.replace(rate, text.find(',', rate) - rate, "\"stepsPerSecond\": 30");
+    std::FILE* handle = std::fopen(level.c_str(), "w");
+    ASSERT_NE(handle, nullptr);
+    std::fputs(text.c_str(), handle);
+    std::fclose(handle);
+    Opened opened("grinder");
+    EXPECT_TRUE(opened.session.Warnings().empty()) << "a registered scene steps at the harness's rate";
+    opened.session.OpenFile(level);
+    std::string all;
+    for (const Diagnostic& warning : opened.session.Warnings())
+    {
+        EXPECT_TRUE(warning.warning);
+        all += warning.ToString() + "\n";
+    }
+    EXPECT_NE(all.find("gravty"), std::string::npos) << all;
+    EXPECT_NE(all.find("gravity"), std::string::npos) << all;
+    EXPECT_NE(all.find("stepsPerSecond: warning: the scene steps at 30 Hz; the testbed steps at 60 Hz"),
+              std::string::npos)
+        << all;
+}
+
+// Zooming goes the way asked, also from views far out or far in (a 40 km level fitted at 0.02 px/m zoomed
+// in to 0.5 px/m when zoomed out; a 5 cm one zoomed out when zoomed in), and never jumps to a limit.
+TEST(TestbedSession, ZoomGoesTheWayAskedFromAnyView)
+{
+    for (const int height : {1, 10000000}) // 10 m of grinder on 1 px, or on 10^7 px: 0.1 and 10^6 px/m
+    {
+        Opened opened("grinder");
+        Session& session = opened.session;
+        session.Resize(kViewWidth, height);
+        const float fitted = session.Camera().pixelsPerMetre;
+        const b2Vec2 middle = session.Camera().center;
+        session.Zoom(kKeyZoomStep, middle); // z: out
+        const float out = session.Camera().pixelsPerMetre;
+        EXPECT_LT(out, fitted) << height;
+        EXPECT_NEAR(out, fitted / kKeyZoomStep, 1e-3f * fitted) << height;
+        session.Zoom(1.0f / kKeyZoomStep, middle); // x: in, never out
+        EXPECT_GE(session.Camera().pixelsPerMetre, out) << height;
+    }
+}
+
+// An effects edit keeps the material of a fixture the scene file does not name: the steel ball the testbed
+// launched turned grey (no material) after the edit.
+TEST(TestbedSession, AnEffectsEditKeepsTheLaunchedBallsMaterial)
+{
+    Opened opened("grinder");
+    Session& session = opened.session;
+    session.Launch();
+    const b2Fixture* ball = session.Sim().GetScene().world->GetBodyList()->GetFixtureList();
+    ASSERT_EQ(session.Sim().GetEffects().Material(ball), session.Sim().GetEffects().FindMaterial("steel"));
+    EffectsConfig edited = session.Sim().GetEffects().Config();
+    edited.materials.insert(edited.materials.begin(), "glass"); // every id moves
+    session.ApplyConfig(edited);
+    EXPECT_EQ(session.Sim().GetEffects().Material(ball), session.Sim().GetEffects().FindMaterial("steel"));
 }
 
 } // namespace cfx::testbed
