@@ -167,8 +167,9 @@ public:
     void ForgetBody(const b2Body* body);
     /// Call right after b2World::ShiftOrigin(newOrigin), with the same vector (m): every pool particle
     /// moves by -newOrigin with the world (body-backed ones move with their bodies), and so do the
-    /// centres of Hits(). Throws InputError (file "<api>", field "newOrigin") when it is not finite;
-    /// nothing changes then.
+    /// centres of Hits(). The static geometry cache is built again at the next step, unless newOrigin is
+    /// zero (then nothing changes). Throws InputError (file "<api>", field "newOrigin") when it is not
+    /// finite; nothing changes then.
     void ShiftOrigin(b2Vec2 newOrigin);
     /// Rebuilds the static geometry cache at the next step. Never needed: every change of the static
     /// geometry, a shape edited in place too, is detected (docs/particles.md).

@@ -13,21 +13,29 @@ namespace cfx::particles
 /// does ending on it unless `endOnEdgeCounts`: a particle's centre is never on a surface, so the particle
 /// check counts it (far from the origin, where a float's spacing is millimetres, a particle could cross in
 /// two steps, onto the line and off it, neither of them strictly across).
+/// Computed in doubles: in floats, the side of a point 1 mm from the middle of a 200 km edge came out wrong.
 inline bool PathCrossesEdge(b2Vec2 p, b2Vec2 q, b2Vec2 v1, b2Vec2 v2, bool oneSided,
                             bool endOnEdgeCounts = false)
 {
-    const auto cross = [](b2Vec2 a, b2Vec2 b) { return a.x * b.y - a.y * b.x; };
-    const b2Vec2 e = v2 - v1;
-    const float sideP = cross(p - v1, e); // > 0: right of v1 -> v2, the front
-    const float sideQ = cross(q - v1, e);
-    const bool endsOn = endOnEdgeCounts && sideQ == 0.0f && (oneSided ? sideP > 0.0f : sideP != 0.0f);
-    const bool opposite = endsOn || (oneSided ? (sideP > 0.0f && sideQ < 0.0f) : (sideP * sideQ < 0.0f));
+    struct Point
+    {
+        double x, y;
+    };
+    const auto minus = [](b2Vec2 a, b2Vec2 b) {
+        return Point{static_cast<double>(a.x) - b.x, static_cast<double>(a.y) - b.y};
+    };
+    const auto cross = [](Point a, Point b) { return a.x * b.y - a.y * b.x; };
+    const Point e = minus(v2, v1);
+    const double sideP = cross(minus(p, v1), e); // > 0: right of v1 -> v2, the front
+    const double sideQ = cross(minus(q, v1), e);
+    const bool endsOn = endOnEdgeCounts && sideQ == 0.0 && (oneSided ? sideP > 0.0 : sideP != 0.0);
+    const bool opposite = endsOn || (oneSided ? (sideP > 0.0 && sideQ < 0.0) : (sideP * sideQ < 0.0));
     if (!opposite)
     {
         return false;
     }
-    const b2Vec2 d = q - p;
-    return cross(v1 - p, d) * cross(v2 - p, d) <= 0.0f;
+    const Point d = minus(q, p);
+    return cross(minus(v1, p), d) * cross(minus(v2, p), d) <= 0.0;
 }
 
 } // namespace cfx::particles

@@ -247,6 +247,11 @@ TEST(ParticlePool, StaticCacheFollowsCreatedMovedAndDestroyedFixtures)
         scene.StepAll();
     }
     EXPECT_EQ(scene.system->StaticGeometryBuilds(), builds) << "nothing changed: no rebuild";
+    // Neither does a shift of the origin by zero (a trial's every 20 steps rebuilt it every time).
+    scene.world->ShiftOrigin(b2Vec2(0.0f, 0.0f));
+    scene.system->ShiftOrigin(b2Vec2(0.0f, 0.0f));
+    scene.StepAll();
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), builds) << "a shift by zero moves nothing";
 
     // A fixture added to an existing static body, above the particle's path.
     b2PolygonShape shelf;
@@ -741,6 +746,38 @@ TEST(ParticlePool, ALifetimeOfWholeStepsLastsThatManyStepsGiveOrTakeOne)
         }
     }
     EXPECT_GT(longer, 0) << "the docs' 'one more' happens";
+}
+
+// Long lifetimes at high step rates: a float life near 1 drops a loss under half its spacing, so at 10 kHz a
+// trial's lifetime of 3,600 s never ended (life 1 after 3,700 s) and 1,000 s ran 19 % fast. A type's loss
+// under 2^-12 a step is saved up and taken when it reaches that: a lifetime then holds to 0.04 % of itself
+// (particles.md).
+TEST(ParticlePool, LongLifetimesEndOnTimeAtHighStepRates)
+{
+    constexpr float kHz = 10000.0f;
+    const auto agedLife = [](float lifetime, int steps)
+    {
+        ParticleTypeDef type = Ball();
+        type.lifetime = lifetime;
+        type.collide = false;
+        type.gravityScale = 0.0f;
+        Pool scene({type});
+        scene.Add(b2Vec2(0.0f, 5.0f));
+        int lived = 0;
+        for (; lived < steps && scene.system->Count() > 0; ++lived)
+        {
+            scene.system->Step(1.0f / kHz, b2Vec2(0.0f, 0.0f));
+        }
+        return std::make_pair(lived, scene.system->Count() > 0 ? scene.Life(0) : 0.0f);
+    };
+    const auto [steps3600, life3600] = agedLife(3600.0f, 2000000); // 200 s
+    EXPECT_EQ(steps3600, 2000000);
+    EXPECT_NEAR(life3600, 1.0f - 200.0f / 3600.0f, 4.0e-4f);
+    const auto [steps1000, life1000] = agedLife(1000.0f, 2000000);
+    EXPECT_NEAR(life1000, 0.8f, 4.0e-4f);
+    const auto [steps20, life20] = agedLife(20.0f, 300000); // dies at 200,000 steps
+    EXPECT_NEAR(steps20, 200000, 80);
+    EXPECT_EQ(life20, 0.0f);
 }
 
 TEST(ParticlePool, LowestLifeRecyclesTheParticleWithTheLeastTimeLeft)
