@@ -467,6 +467,13 @@ const std::array kSoundRuleFields{
               .doc = "a sounding scrape voice goes on while its loudness stays at or above scrapeStart times "
                      "this (hysteresis); below it, or when the scrape ends, it releases",
               .step = 0.01f},
+    Field<SR>{.name = "scrapeWindow",
+              .member = &SR::scrapeWindow,
+              .unit = "s",
+              .range = {0.0f, 1.0f},
+              .doc = "a scrape's drive is averaged over this much of the past: a landing's one-step spike of "
+                     "force sounds alike at every step rate from 1 / scrapeWindow up; 0: each step's own",
+              .step = 0.005f},
     Field<SR>{.name = "minDuration",
               .member = &SR::minDuration,
               .unit = "s",

@@ -34,6 +34,7 @@
 #include "contactfx/events.h"
 #include "contactfx/materials.h"
 
+#include <array>
 #include <box2d/b2_math.h>
 #include <cstdint>
 #include <span>
@@ -153,6 +154,10 @@ public:
     const SoundRuleDef& VoiceSound(const SoundVoice& voice) const;
 
 private:
+    /// Buckets a scrape's window is kept in: a spike's loudness depends on where the window's oldest bucket
+    /// starts by at most 1 / (kWindowBuckets - 1), 7 %.
+    static constexpr std::size_t kWindowBuckets = 16;
+
     // One body pair of one rule and one kind: its scrape (or its impacts), its voice, its cooldown. Particle
     // hits: one particle type (no rule) and one body (bodyA; bodyB null).
     struct Pair
@@ -163,7 +168,13 @@ private:
         const b2Body* bodyA = nullptr;
         const b2Body* bodyB = nullptr;
         std::uint32_t scrapeId = 0; ///< the attached scrape event id; 0: none (the scrape ended)
-        float target = 0.0f;        ///< loudness of the attached scrape's last event
+        float drive = 0.0f;         ///< the attached scrape's drive in this step (0: no scrape event)
+        float target = 0.0f;        ///< loudness of the scrape: its drive over the window (ScrapeWindow)
+        /// The scrape's drive summed over time (drive * s) in kWindowBuckets buckets of scrapeWindow /
+        /// kWindowBuckets each, aligned on the voices' clock; `newestBucket` is the absolute index of the
+        /// one that holds the end of the last step (-1: none yet).
+        std::array<float, kWindowBuckets> window{};
+        std::int64_t newestBucket = -1;
         float pending = 0.0f; ///< impacts, particle hits: loudness of one waiting to start a voice; 0: none
         std::uint32_t pendingId = 0;
         /// Particle hits: the hits merged into the pending or sounding voice so far, their approach speeds
@@ -207,6 +218,7 @@ private:
     std::vector<SoundVoice> m_voices;
     std::vector<VoiceChange> m_changes;
     double m_time = 0.0;
+    double m_stepStart = 0.0; ///< m_time before the step now being taken
     std::uint32_t m_nextId = 1;
     std::uint32_t m_hitsThisStep = 0; ///< particle hits events read so far in this Step
     SoundStats m_stats;

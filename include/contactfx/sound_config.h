@@ -43,10 +43,17 @@ struct SoundRuleDef
     /// Least time between two voice starts of the same kind for one body pair of this rule, s, [0, 60].
     float cooldown = 0.1f;
     /// Scrape loudness = 1 - exp(-(intensityGain * intensity + slipSpeedGain * tangential speed +
-    /// forceGain * normal force)), normal force = the pair's normal impulse / dt.
+    /// forceGain * normal force)), normal force = the pair's normal impulse / dt, that sum (the drive)
+    /// averaged over the last scrapeWindow.
     float intensityGain = 0.05f; ///< per unit of intensity, [0, 1000]
     float slipSpeedGain = 0.0f;  ///< per m/s, [0, 1000]
     float forceGain = 0.0f;      ///< per N, [0, 1000]
+    /// s, [0, 1]: a scrape's drive is averaged over this much of the past, so that the one-step spike of a
+    /// landing (its normal force is the landing's impulse over the step, and grows with the step rate)
+    /// sounds alike at every step rate from 1 / scrapeWindow up (25 Hz by default; in a trial the scrape
+    /// of a block landing while sliding peaked at 0, 0.15, 0.27 and 0.47 at 30, 60, 120 and 240 Hz). A
+    /// steady scrape reaches its loudness over the window. 0: each step's own drive.
+    float scrapeWindow = 0.04f;
     /// Impact loudness = 1 - exp(-(approachSpeedGain * approach speed + impulseGain * normal impulse)).
     float approachSpeedGain = 0.15f; ///< per m/s, [0, 1000]
     float impulseGain = 0.0f;        ///< per N*s, [0, 1000]

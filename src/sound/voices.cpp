@@ -67,10 +67,45 @@ float Saturate(float drive)
     return 1.0f - std::exp(-std::max(drive, 0.0f));
 }
 
-float ScrapeLoudness(const SoundRuleDef& rule, const EffectEvent& event, float dt)
+// What a scrape event drives its loudness with (before Saturate).
+float ScrapeDrive(const SoundRuleDef& rule, const EffectEvent& event, float dt)
 {
-    return Saturate(rule.intensityGain * event.intensity + rule.slipSpeedGain * event.tangentialSpeed +
-                    rule.forceGain * event.normalImpulse / dt);
+    return rule.intensityGain * event.intensity + rule.slipSpeedGain * event.tangentialSpeed +
+           rule.forceGain * event.normalImpulse / dt;
+}
+
+// Adds `drive` over the step [from, to) (s) to `window` (sums of drive * s over `buckets.size()` buckets of
+// `width` s, aligned on multiples of `width`; `newest`: the absolute index of the last one filled), and
+// returns the mean drive from the oldest bucket's start to `to`: a steady drive's own, and a one-step spike's
+// area over about the window, whatever the step's length up to the window.
+template <std::size_t kCount>
+float WindowMean(std::array<float, kCount>& window, std::int64_t& newest, double width, double from,
+                 double to, float drive)
+{
+    const auto count = static_cast<std::int64_t>(kCount);
+    // The bucket holding the end of the step: the one the time just before `to` falls in.
+    const std::int64_t last = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(to / width)) - 1);
+    for (std::int64_t bucket = std::max(newest + 1, last - count + 1); bucket <= last; ++bucket)
+    {
+        window[static_cast<std::size_t>(bucket % count)] = 0.0f;
+    }
+    newest = last;
+    const std::int64_t oldest = last - count + 1;
+    for (std::int64_t bucket = std::max(oldest, static_cast<std::int64_t>(std::floor(from / width)));
+         bucket <= last; ++bucket)
+    {
+        const double overlap = std::min(to, static_cast<double>(bucket + 1) * width) -
+                               std::max(from, static_cast<double>(bucket) * width);
+        window[static_cast<std::size_t>(bucket % count)] +=
+            static_cast<float>(drive * std::max(overlap, 0.0));
+    }
+    float sum = 0.0f;
+    for (const float part : window)
+    {
+        sum += part;
+    }
+    const double span = to - static_cast<double>(oldest) * width;
+    return span > 0.0 ? static_cast<float>(sum / span) : drive;
 }
 
 float ImpactLoudness(const SoundRuleDef& rule, const EffectEvent& event)
@@ -328,7 +363,7 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
             pair = &FindOrAdd(VoiceKind::scrape, event);
             pair->scrapeId = event.id;
         }
-        pair->target = ScrapeLoudness(rule, event, dt);
+        pair->drive = ScrapeDrive(rule, event, dt);
         pair->voice.slipSpeed = event.tangentialSpeed;
         pair->voice.point = event.point;
         break;
@@ -337,7 +372,7 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
         if (Pair* pair = FindScrape(event.id))
         {
             pair->scrapeId = 0;
-            pair->target = 0.0f;
+            pair->drive = 0.0f;
         }
         break;
     case EffectEventType::impact:
@@ -381,6 +416,13 @@ void SoundVoices::Advance(Pair& pair)
         return;
     }
 
+    // The step's drive, over the window (none: the step's own).
+    pair.target = Saturate(rule.scrapeWindow > 0.0f
+                               ? WindowMean(pair.window, pair.newestBucket,
+                                            static_cast<double>(rule.scrapeWindow) / kWindowBuckets,
+                                            m_stepStart, m_time, pair.drive)
+                               : pair.drive);
+    pair.drive = 0.0f; // each scrape event drives its own step
     const float continueAt = rule.scrapeStart * rule.scrapeContinueRatio;
     const bool loud = pair.scrapeId != 0 && pair.target >= continueAt;
     if (voice.id == 0)
@@ -485,6 +527,7 @@ void SoundVoices::ApplyCap()
 void SoundVoices::Step(std::span<const EffectEvent> events, float dt)
 {
     detail::CheckStepTime(dt); // before anything changes: a NaN time would stay in every later voice
+    m_stepStart = m_time;
     m_time += static_cast<double>(dt);
     m_changes.clear();
     m_claims.clear();

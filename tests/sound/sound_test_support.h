@@ -12,11 +12,17 @@ namespace cfx::test
 {
 
 /// `count` resting boxes on a ground, each a body pair with the ground for hand-made events of rule 0 of
-/// the default preset (steel on concrete).
+/// the default preset (steel on concrete). Its sound rule has the defaults but scrapeWindow 0: a scrape
+/// event's loudness is its own (the window has tests of its own).
 struct EventBench
 {
     explicit EventBench(int count)
     {
+        SoundRuleDef instant;
+        instant.materialA = config.rules[0].materialA;
+        instant.materialB = config.rules[0].materialB;
+        instant.scrapeWindow = 0.0f;
+        config.sound.rules.push_back(instant);
         ground = world.CreateGround(0.8f, 0.5f * static_cast<float>(count) + 2.0f)->GetFixtureList();
         for (int i = 0; i < count; ++i)
         {
