@@ -153,8 +153,8 @@ const std::array kParticleTypeFields{
              .range = {0.001f, 10.0f},
              .doc = "collision radius (from 1 mm: below, float rounding at coordinates of metres is "
                     "larger than the particle); starts are looked for within the larger of 1 m and the other "
-                    "body's size plus 0.1 m along the surface, so a particle much wider than the body "
-                    "making the contact finds none and is not spawned (`spawn_rejected`)",
+                    "body's size plus 0.1 m along the surface (the tutorial's drop: 1 m), so a particle much "
+                    "wider than the body making the contact finds none and is not spawned (`spawn_rejected`)",
              .step = 0.001f},
     Field<P>{
         .name = "restitution", .member = &P::restitution, .range = kUnit, .doc = "bounce", .step = 0.01f},

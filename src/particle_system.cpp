@@ -624,12 +624,20 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         // Exactly as the step computes it from a zero velocity.
         step.restVelocity =
             b2Vec2((0.0f + step.gravityDelta.x) * step.damping, (0.0f + step.gravityDelta.y) * step.damping);
-        // Saved up in doubles and taken when it reaches kLeastLifeLoss: the same bits as dt * lifeRate
-        // whenever that is above it (a float product is the rounded exact one).
+        // A loss of at least kLeastLifeLoss is the step's own (the bits it always was); a smaller one is
+        // saved up in doubles and taken when it reaches that.
         double& pending = impl.pendingLifeLoss[t];
-        pending += static_cast<double>(dt) * static_cast<double>(params.lifeRate);
-        step.lifeLoss = pending >= kLeastLifeLoss ? static_cast<float>(pending) : 0.0f;
-        pending -= static_cast<double>(step.lifeLoss);
+        const float own = dt * params.lifeRate;
+        if (pending == 0.0 && own >= kLeastLifeLoss)
+        {
+            step.lifeLoss = own;
+        }
+        else
+        {
+            pending += static_cast<double>(dt) * static_cast<double>(params.lifeRate);
+            step.lifeLoss = pending >= kLeastLifeLoss ? static_cast<float>(pending) : 0.0f;
+            pending -= static_cast<double>(step.lifeLoss);
+        }
         step.side = particles::ParticleSide{params.radius,    params.restitution,  params.friction,
                                             params.restSpeed, params.categoryBits, params.maskBits};
         step.hitSpeed = params.hitSpeed;

@@ -6,6 +6,10 @@
 #include <box2d/b2_world.h>
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 namespace cfx
 {
@@ -56,7 +60,15 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
     effectsDef.config = config; // copied before the old effects go: `config` may be theirs
     effectsDef.seed = m_seed;
     effectsDef.particles = m_particleOptions;
-    // Fixtures the scene file does not name (a ball the testbed launched) keep their material by name.
+    // Fixtures made after the scene was loaded (a ball the testbed launched) keep their material by name;
+    // the scene's own get theirs from its file and the new configuration's assignment rules, as on a
+    // restart.
+    std::unordered_set<const b2Fixture*> fromFile;
+    for (const SceneFixture& fixture : m_scene.fixtures)
+    {
+        fromFile.insert(fixture.fixture);
+        fromFile.insert(fixture.backSide);
+    }
     std::vector<std::pair<b2Fixture*, std::string>> given;
     const EffectsConfig& old = m_effects->Config();
     for (b2Body* body = m_scene.world->GetBodyList(); body != nullptr; body = body->GetNext())
@@ -64,7 +76,7 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
         for (b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
         {
             const MaterialId material = m_effects->Material(fixture);
-            if (material.IsValid())
+            if (material.IsValid() && !fromFile.contains(fixture))
             {
                 given.emplace_back(fixture, old.materials[material.index]);
             }
@@ -77,7 +89,7 @@ void Simulation::ReplaceEffects(const EffectsConfig& config)
     for (const auto& [fixture, name] : given)
     {
         const MaterialId material = m_effects->FindMaterial(name);
-        if (!m_effects->Material(fixture).IsValid() && material.IsValid())
+        if (material.IsValid())
         {
             m_effects->SetMaterial(fixture, material);
         }

@@ -84,17 +84,29 @@ void EffectsEditor::Save(const Session& session)
     {
         return;
     }
-    if (SameFile(savePath, session.SceneFile()))
+    for (const std::filesystem::path& file : session.SceneFiles())
     {
-        message = savePath + ": is the scene file on show: not overwritten";
+        if (SameFile(savePath, file))
+        {
+            message = savePath + ": is a file the testbed's scenes are read from (" + file.string() +
+                      "): not overwritten";
+            messageIsError = true;
+            return;
+        }
+    }
+    std::error_code noPath; // an empty name: no folder
+    const std::filesystem::path target = std::filesystem::absolute(savePath, noPath).lexically_normal();
+    if (SameFile(target.parent_path(), session.ScenesDir()))
+    {
+        message = savePath + ": is in the bundled scenes' folder (" + session.ScenesDir().string() +
+                  "): save it elsewhere";
         messageIsError = true;
         return;
     }
     try
     {
         SaveEffectsFile(draft, savePath);
-        std::error_code error;
-        message = "saved " + std::filesystem::absolute(savePath, error).lexically_normal().string();
+        message = "saved " + target.string();
         messageIsError = false;
     }
     catch (const InputError& error)

@@ -29,8 +29,9 @@ struct EffectsEditor
     void Follow(const Session& session, bool force = false);
     /// Validates the draft and, when valid, puts it into force.
     void Apply(Session& session);
-    /// Writes the draft to savePath, unless it has problems or savePath is the scene file on show in
-    /// `session` (Session::SceneFile, also through a link). The message names the file written, absolute.
+    /// Writes the draft to savePath, unless it has problems, or savePath is a file the session's scenes are
+    /// read from (Session::SceneFiles, also through a link) or in the registered scenes' folder. The
+    /// message names the file written, absolute.
     void Save(const Session& session);
     /// What "Add sound rule" adds: a sound rule for the first pair rule (in order) that has none yet, else
     /// for the first pair rule, else with no materials (a sound rule applies only to a pair rule's pair).

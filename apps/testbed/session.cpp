@@ -107,13 +107,47 @@ std::vector<const SceneEntry*> Session::Listed() const
     return listed;
 }
 
+std::vector<std::filesystem::path> Session::SceneFiles() const
+{
+    std::vector<std::filesystem::path> files;
+    for (const SceneEntry* entry : Listed())
+    {
+        files.push_back(m_scenesDir / entry->file);
+        if (!entry->effectsFile.empty())
+        {
+            files.push_back(m_scenesDir / entry->effectsFile);
+        }
+    }
+    return files;
+}
+
 void Session::OpenNeighbour(int step)
 {
     const std::vector<const SceneEntry*> listed = Listed();
     const auto count = static_cast<long>(listed.size());
     const long current = std::find(listed.begin(), listed.end(), m_entry) - listed.begin();
-    const long next = ((current + step) % count + count) % count;
-    Open(*listed[static_cast<std::size_t>(next)]);
+    const long direction = step < 0 ? -1 : 1;
+    std::optional<InputError> first;
+    for (long tried = 0; tried < count - 1; ++tried)
+    {
+        const long next = ((current + step + direction * tried) % count + count) % count;
+        try
+        {
+            Open(*listed[static_cast<std::size_t>(next)]);
+            return;
+        }
+        catch (const InputError& error)
+        {
+            if (!first)
+            {
+                first = error;
+            }
+        }
+    }
+    if (first)
+    {
+        throw *first;
+    }
 }
 
 void Session::Launch()

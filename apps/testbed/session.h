@@ -44,8 +44,9 @@ public:
     /// The scenes to choose from, in order: the scene file last opened (if any), then Scenes().
     std::vector<const SceneEntry*> Listed() const;
     /// Opens the scene `step` places after the current one in Listed() order (negative: before), wrapping
-    /// around, with the configuration chosen (see Open), else its own effects. Throws InputError and keeps
-    /// the scene on bad input.
+    /// around, with the configuration chosen (see Open), else its own effects. One that cannot be opened (a
+    /// scene file deleted since) is passed over to the next in the same direction; when none can be, throws
+    /// the first one's InputError and keeps the scene.
     void OpenNeighbour(int step);
     /// Launches a steel ball (material "steel" when the effects have it) from the top left of the view
     /// towards the middle of its bottom edge, fast enough to strike sparks.
@@ -82,6 +83,11 @@ public:
     std::vector<Diagnostic> Warnings() const;
     /// The RUBE file the scene on show was read from.
     std::filesystem::path SceneFile() const { return m_scenesDir / m_entry->file; }
+    /// Every file the listed scenes are read from: their RUBE files and the registered scenes' effects
+    /// files (not a configuration given with --effects, which Save as may update).
+    std::vector<std::filesystem::path> SceneFiles() const;
+    /// The folder of the registered scenes (BundledScenesDir() in the testbed).
+    const std::filesystem::path& ScenesDir() const { return m_scenesDir; }
     const cfx::Camera& Camera() const { return m_camera; }
     /// Effect events of the recent steps (cleared when a simulation is opened).
     const EventLog& Events() const { return m_events; }

@@ -59,7 +59,9 @@ struct ParticleTypeDef
     float restitution = 0.3f; ///< [0, 1]: bounce
     /// m/s, [0, 1000]: a hit approaching the surface slower than this does not bounce (the particle comes to
     /// rest instead of jittering). Mixed with the fixture's restitution threshold by taking the smaller, as
-    /// Box2D mixes two fixtures' (the body backend sets it as its fixtures' restitutionThreshold).
+    /// Box2D mixes two fixtures' (the body backend sets it as its fixtures' restitutionThreshold). At 0 every
+    /// hit bounces: pool particles still come to rest (a touch within 0.1 mm is not a hit), Box2D bodies
+    /// keep hopping by millimetres.
     float restSpeed = 0.5f;
     float friction = 0.5f;               ///< [0, 1000]: Coulomb friction on each hit
     std::uint16_t categoryBits = 0x0002; ///< like b2Filter: a fixture is hit when its maskBits has these

@@ -228,10 +228,13 @@ namespace
 // Grid cells a moving shape is listed in, on average at most (the cells grow until it holds).
 constexpr std::size_t kMovingItemsPerBox = 8;
 
-// Static segments longer than this (m) are swept as pieces of at most this length: a sweep measures a
-// particle from a segment's first end, and a float's spacing there limits its precision (1 mm particles
-// raining near the middle of a 50 km edge fell through it). Over 256 m the sweep stays within 3e-5 m.
-constexpr double kMaxPieceLength = 256.0;
+// Static segments longer than kPieceLength (m) are swept as pieces of that length, at most kMaxPieces of
+// them (longer pieces beyond): a sweep measures a particle from a segment's first end, and a float's spacing
+// there limits its precision (1 mm particles raining near the middle of a 50 km edge fell through it). Over
+// a piece of length L the sweep is within about L * 2^-23 (3e-5 m for 256 m, 2 mm for the 16 km pieces of a
+// 1,000 km edge). The cap bounds the cache: a file of 999 edges of 2,000 km each made 7.8 million pieces.
+constexpr double kPieceLength = 256.0;
+constexpr double kMaxPieces = 64.0;
 } // namespace
 
 void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
@@ -413,7 +416,11 @@ void WorldGeometry::BuildStatic(b2World& world)
                     // float's spacing.
                     const double dx = static_cast<double>(v2.x) - v1.x;
                     const double dy = static_cast<double>(v2.y) - v1.y;
-                    const auto pieces = static_cast<int>(std::ceil(std::hypot(dx, dy) / kMaxPieceLength));
+                    // Bounded before the conversion (an edge of 1e12 m overflowed an int; NaN: one piece).
+                    const double wanted = std::ceil(std::hypot(dx, dy) / kPieceLength);
+                    const int pieces = wanted > kMaxPieces ? static_cast<int>(kMaxPieces)
+                                       : wanted > 1.0      ? static_cast<int>(wanted)
+                                                           : 1;
                     b2Vec2 from = v1;
                     for (int piece = 1; piece <= pieces; ++piece)
                     {

@@ -67,8 +67,9 @@ namespace cfx::test
 // Near the origin, but on a static edge whose ends are far: a trial rained 1 mm particles near the middle of
 // one two-sided edge at 240 Hz and 676 of 12,000 fell through it at 50 km long, 5,443 at 200 km (5 mm: 1,941
 // at 200 km), because a sweep measured them from the edge's first end, where a float's spacing is
-// millimetres. Long static segments are swept as pieces of at most 256 m, and the particle check reads a side
-// in doubles. Edges and chains from 50 km to 2,000 km long, level and tilted.
+// millimetres. Long static segments are swept as pieces of 256 m (at most 64 of them), and the particle check
+// reads a side in doubles. Edges and chains of 50 and 200 km with 1 mm particles, and of 2,000 km (pieces of
+// 31 km) with 1 cm ones, level and tilted.
 TEST(FarFromTheOrigin, ParticlesStayAboveTheMiddleOfAVeryLongEdgeOrChain)
 {
     for (const float length : {5.0e4f, 2.0e5f, 2.0e6f})
@@ -80,7 +81,7 @@ TEST(FarFromTheOrigin, ParticlesStayAboveTheMiddleOfAVeryLongEdgeOrChain)
                 SCOPED_TRACE(testing::Message()
                              << length << " m, slope " << slope << (chain ? ", chain" : ", edge"));
                 ParticleTypeDef type = Ball(0.3f);
-                type.radius = 0.001f;
+                type.radius = length > 1.0e6f ? 0.01f : 0.001f;
                 type.maskBits = 0xFFFF;
                 ParticleSystemOptions options;
                 options.checkParticles = true;

@@ -25,7 +25,7 @@ struct Reference
 };
 
 constexpr Reference kReferences[] = {
-    {"tutorial", "0d34832b66fdbfa1"},
+    {"tutorial", "0220b34135b06895"},
     {"rockslide", "3dbd048c01e7e080"},
 };
 

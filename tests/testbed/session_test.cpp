@@ -346,15 +346,20 @@ TEST(TestbedEffectsEditor, DoesNotSaveOverTheSceneFileOnShow)
         editor.savePath = name.string();
         editor.Save(opened.session);
         EXPECT_TRUE(editor.messageIsError) << name;
-        EXPECT_NE(editor.message.find("is the scene file on show: not overwritten"), std::string::npos)
+        EXPECT_NE(editor.message.find("is a file the testbed's scenes are read from"), std::string::npos)
             << editor.message;
     }
     EXPECT_TRUE(test::FileText(level) == text) << "the level was replaced";
-    // A registered scene's bundled file neither.
+    // Nor, with another scene on show, the level still listed, nor a registered scene's files.
     opened.session.Open(*FindScene("grinder"));
-    editor.savePath = (kScenesDir / "grinder.json").string();
-    editor.Save(opened.session);
-    EXPECT_TRUE(editor.messageIsError);
+    for (const std::filesystem::path& name :
+         {level, kScenesDir / "grinder.json", kScenesDir / "tutorial.effects.json"})
+    {
+        editor.savePath = name.string();
+        editor.Save(opened.session);
+        EXPECT_TRUE(editor.messageIsError) << name;
+    }
+    EXPECT_TRUE(test::FileText(level) == text) << "the level was replaced";
     // Elsewhere it saves, and says where.
     editor.savePath = (dir / "fx.json").string();
     editor.Save(opened.session);
@@ -499,6 +504,28 @@ TEST(TestbedSceneFile, StaysListedFirstAndTheBracketsGoThroughIt)
     EXPECT_EQ(session.Sim().Steps(), 0u);
 }
 
+// A scene file deleted after it was opened does not block the brackets: they pass over it (a trial's `[`
+// from the first registered scene failed every time).
+TEST(TestbedSceneFile, TheBracketsPassOverAFileThatCannotBeOpened)
+{
+    const std::filesystem::path dir = test::ScratchDir("testbed_scene_file_deleted");
+    const std::filesystem::path level = dir / "level.json";
+    std::filesystem::copy_file(kScenesDir / "grinder.json", level);
+    Opened opened("grinder");
+    Session& session = opened.session;
+    const std::span<const SceneEntry> scenes = Scenes();
+    session.OpenFile(level);
+    session.OpenNeighbour(1);
+    ASSERT_EQ(&session.Entry(), &scenes.front());
+    std::filesystem::remove(level);
+    session.OpenNeighbour(-1);
+    EXPECT_EQ(&session.Entry(), &scenes.back()) << "past the deleted file";
+    session.OpenNeighbour(1);
+    EXPECT_EQ(&session.Entry(), &scenes.front()) << "past it the other way";
+    EXPECT_THROW(session.Open(*session.Listed().front()), InputError) << "chosen itself, it says why";
+    EXPECT_EQ(&session.Entry(), &scenes.front());
+}
+
 // What `contactfx run` warns of in a scene file, the testbed says too: unknown keys, and a step rate that
 // is not its own (a trial's level with "gravty" fell nowhere, silently).
 TEST(TestbedSceneFile, WarnsOfUnknownKeysAndAnotherStepRate)
@@ -565,6 +592,48 @@ TEST(TestbedSession, AnEffectsEditKeepsTheLaunchedBallsMaterial)
     edited.materials.insert(edited.materials.begin(), "glass"); // every id moves
     session.ApplyConfig(edited);
     EXPECT_EQ(session.Sim().GetEffects().Material(ball), session.Sim().GetEffects().FindMaterial("steel"));
+}
+
+// ...but the scene's own fixtures take their materials from the new configuration, as a restart would: a
+// trial's level without `material` properties kept the tutorial preset's guessed materials after an edit
+// that removed the guesses, and lost them on restart.
+TEST(TestbedSession, AnEffectsEditGivesTheScenesFixturesTheNewAssignments)
+{
+    const std::filesystem::path dir = test::ScratchDir("testbed_edit_assignments");
+    const std::filesystem::path level = dir / "unnamed.json";
+    std::string text = test::FileText(kScenesDir / "grinder.json");
+    for (std::size_t at = text.find("\"material\""); at != std::string::npos; at = text.find("\"material\""))
+    {
+        text.replace(at, 10, "\"surface\"");
+    }
+    std::FILE* handle = std::fopen(level.c_str(), "w");
+    ASSERT_NE(handle, nullptr);
+    std::fputs(text.c_str(), handle);
+    std::fclose(handle);
+    Opened opened("grinder");
+    Session& session = opened.session;
+    session.OpenFile(level, TutorialPreset()); // its guesses give every fixture a material
+    const auto materials = [&session]
+    {
+        int given = 0;
+        for (const b2Body* body = session.Sim().GetScene().world->GetBodyList(); body != nullptr;
+             body = body->GetNext())
+        {
+            for (const b2Fixture* fixture = body->GetFixtureList(); fixture != nullptr;
+                 fixture = fixture->GetNext())
+            {
+                given += session.Sim().GetEffects().Material(fixture).IsValid() ? 1 : 0;
+            }
+        }
+        return given;
+    };
+    ASSERT_GT(materials(), 0);
+    EffectsConfig edited = TutorialPreset();
+    edited.assignments.clear();
+    session.ApplyConfig(edited);
+    EXPECT_EQ(materials(), 0) << "as after a restart";
+    session.Restart();
+    EXPECT_EQ(materials(), 0);
 }
 
 } // namespace cfx::testbed
