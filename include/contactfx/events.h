@@ -69,7 +69,8 @@ struct EffectEvent
     /// any end of a fixture destroyed without Effects::ForgetFixture: contactfx cannot know it is gone.)
     const b2Fixture* fixtureA = nullptr;
     const b2Fixture* fixtureB = nullptr;
-    /// Scrape events: the scrape's id, the same from began to ended, never reused. Impacts: an id of
+    /// Scrape events: the scrape's id, the same from began to ended, never reused by this Effects (a new
+    /// Effects counts from 1 again). Impacts: an id of
     /// their own from the same counter. Particle hits: 0.
     std::uint32_t id = 0;
     std::uint64_t step = 0; ///< Effects step counter when the event was made (first step: 0)
