@@ -74,7 +74,7 @@ float ScrapeDrive(const SoundRuleDef& rule, const EffectEvent& event, float dt)
            rule.forceGain * event.normalImpulse / dt;
 }
 
-// Adds `drive` over the step [from, to) (s) to `window` (sums of drive * s over `buckets.size()` buckets of
+// Adds `drive` over the step [from, to) (s) to `window` (sums of drive * s over kCount buckets of
 // `width` s, aligned on multiples of `width`; `newest`: the absolute index of the last one filled), and
 // returns the mean drive from the oldest bucket's start to `to`: a steady drive's own, and a one-step spike's
 // area over about the window, whatever the step's length up to the window.
