@@ -636,7 +636,9 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         {
             pending += static_cast<double>(dt) * static_cast<double>(params.lifeRate);
             step.lifeLoss = pending >= kLeastLifeLoss ? static_cast<float>(pending) : 0.0f;
-            pending -= static_cast<double>(step.lifeLoss);
+            // Taken whole: the float's rounding (under 2^-24 of it) is dropped, so that a later step whose
+            // own loss is large enough is its own again.
+            pending = step.lifeLoss > 0.0f ? 0.0 : pending;
         }
         step.side = particles::ParticleSide{params.radius,    params.restitution,  params.friction,
                                             params.restSpeed, params.categoryBits, params.maskBits};

@@ -8,6 +8,32 @@
 namespace cfx::testbed
 {
 
+namespace
+{
+
+// `path` absolute, with every symbolic link in it followed (those of the folders above it, then its own,
+// dangling or not) and `.` and `..` taken as the file system does.
+std::filesystem::path Resolved(const std::filesystem::path& path)
+{
+    std::error_code error; // a part that is missing stays as written
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+}
+
+// The file a write to `name` lands in: its own symbolic links followed too (up to 40, as the kernel).
+std::filesystem::path WhereWritten(const std::filesystem::path& name)
+{
+    std::error_code error;
+    std::filesystem::path path = Resolved(name);
+    for (int link = 0; link < 40 && std::filesystem::is_symlink(path, error); ++link)
+    {
+        const std::filesystem::path target = std::filesystem::read_symlink(path, error);
+        path = Resolved(target.is_absolute() ? target : path.parent_path() / target);
+    }
+    return path;
+}
+
+} // namespace
+
 SoundRuleDef EffectsEditor::NewSoundRule(const EffectsConfig& config)
 {
     auto samePair = [](const std::string& a1, const std::string& b1, const std::string& a2,
@@ -94,14 +120,21 @@ void EffectsEditor::Save(const Session& session)
             return;
         }
     }
-    std::error_code noPath; // an empty name: no folder
-    const std::filesystem::path target = std::filesystem::absolute(savePath, noPath).lexically_normal();
-    if (SameFile(target.parent_path(), session.ScenesDir()))
+    const std::filesystem::path target = WhereWritten(savePath);
+    const std::filesystem::path bundled = Resolved(session.ScenesDir());
+    for (std::filesystem::path folder = target.parent_path(); !folder.empty(); folder = folder.parent_path())
     {
-        message = savePath + ": is in the bundled scenes' folder (" + session.ScenesDir().string() +
-                  "): save it elsewhere";
-        messageIsError = true;
-        return;
+        if (folder == bundled)
+        {
+            message = savePath + ": is in the bundled scenes' folder (" + session.ScenesDir().string() +
+                      "): save it elsewhere";
+            messageIsError = true;
+            return;
+        }
+        if (folder == folder.parent_path())
+        {
+            break;
+        }
     }
     try
     {

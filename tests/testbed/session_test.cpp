@@ -364,7 +364,7 @@ TEST(TestbedEffectsEditor, DoesNotSaveOverTheSceneFileOnShow)
     editor.savePath = (dir / "fx.json").string();
     editor.Save(opened.session);
     EXPECT_FALSE(editor.messageIsError) << editor.message;
-    EXPECT_EQ(editor.message, "saved " + (dir / "fx.json").lexically_normal().string());
+    EXPECT_EQ(editor.message, "saved " + std::filesystem::weakly_canonical(dir / "fx.json").string());
 }
 
 } // namespace cfx::testbed
@@ -502,6 +502,41 @@ TEST(TestbedSceneFile, StaysListedFirstAndTheBracketsGoThroughIt)
     session.Open(*session.Listed().front()); // chosen in the Scenes panel
     EXPECT_EQ(&session.Entry(), file);
     EXPECT_EQ(session.Sim().Steps(), 0u);
+}
+
+// Save as keeps out of the bundled scenes' folder however the name reaches it: a trial wrote into it through
+// a symbolic link followed by `..`, and through a dangling link, each time naming another file as saved.
+TEST(TestbedEffectsEditor, DoesNotSaveIntoTheScenesFolderThroughLinks)
+{
+    const std::filesystem::path dir = test::ScratchDir("testbed_editor_save_links");
+    const std::filesystem::path scenes = dir / "scenes";
+    std::filesystem::create_directories(scenes / "sub");
+    std::filesystem::copy_file(kScenesDir / "grinder.json", scenes / "grinder.json");
+    std::filesystem::create_directory_symlink(scenes / "sub", dir / "linkToSub");
+    std::filesystem::create_symlink(scenes / "new.json", dir / "dangling.json");
+    Session session(scenes);
+    session.Open(*FindScene("grinder"));
+    EffectsEditor editor;
+    editor.Follow(session);
+    for (const std::filesystem::path& name : {scenes / "x.json", scenes / "sub" / "x.json",
+                                              dir / "linkToSub" / ".." / "x.json", dir / "dangling.json"})
+    {
+        editor.savePath = name.string();
+        editor.Save(session);
+        EXPECT_TRUE(editor.messageIsError) << name << ": " << editor.message;
+    }
+    EXPECT_FALSE(std::filesystem::exists(scenes / "x.json"));
+    EXPECT_FALSE(std::filesystem::exists(scenes / "sub" / "x.json"));
+    EXPECT_FALSE(std::filesystem::exists(scenes / "new.json"));
+    // Through a link elsewhere it saves, and names the file the link leads to.
+    std::filesystem::create_directory(dir / "elsewhere");
+    std::filesystem::create_symlink(dir / "elsewhere" / "fx.json", dir / "toElsewhere.json");
+    editor.savePath = (dir / "toElsewhere.json").string();
+    editor.Save(session);
+    EXPECT_FALSE(editor.messageIsError) << editor.message;
+    EXPECT_EQ(editor.message,
+              "saved " + std::filesystem::weakly_canonical(dir / "elsewhere" / "fx.json").string());
+    EXPECT_TRUE(std::filesystem::exists(dir / "elsewhere" / "fx.json"));
 }
 
 // A scene file deleted after it was opened does not block the brackets: they pass over it (a trial's `[`
