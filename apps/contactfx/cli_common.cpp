@@ -6,7 +6,6 @@
 #include "usage.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -128,28 +127,6 @@ void CheckRunOptions(const RunOptions& options)
                              " s), so nothing would be simulated: give --seconds " + NumberText(least) +
                              " or more, or a higher --hz");
     }
-}
-
-namespace
-{
-
-template <typename Number> std::string ShortestText(Number value)
-{
-    std::array<char, 64> text{};
-    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
-}
-
-} // namespace
-
-std::string NumberText(double value)
-{
-    return ShortestText(value);
-}
-
-std::string NumberText(float value)
-{
-    return ShortestText(value);
 }
 
 void PrintSceneWarnings(const Scene& scene, const RunOptions& options)

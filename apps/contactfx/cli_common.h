@@ -65,12 +65,6 @@ void PrintSceneWarnings(const Scene& scene, const RunOptions& options);
 /// (round(seconds * hz) >= 1); throws InputError naming the flag.
 void CheckRunOptions(const RunOptions& options);
 
-/// `value` as the shortest text that reads back as the same double ("0.9999999", "-5", "nan"): what a
-/// range error shows, so a rejected value never looks like one inside the range.
-std::string NumberText(double value);
-/// The same for a float: the shortest text that reads back as the same float ("59.99").
-std::string NumberText(float value);
-
 /// The effects configuration the options select: --effects FILE, else --preset NAME, else the default
 /// preset.
 EffectsConfig SelectConfig(const RunOptions& options);

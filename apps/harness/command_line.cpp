@@ -4,8 +4,11 @@
 #include "contactfx/files/text_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <filesystem>
+#include <system_error>
 
 namespace cfx
 {
@@ -36,6 +39,28 @@ void CheckOutputFile(const std::string& flag, const std::string& file)
     {
         throw InputError(kCommandLine, flag, file + ": " + problem);
     }
+}
+
+namespace
+{
+
+template <typename Number> std::string ShortestText(Number value)
+{
+    std::array<char, 64> text{};
+    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
+}
+
+} // namespace
+
+std::string NumberText(double value)
+{
+    return ShortestText(value);
+}
+
+std::string NumberText(float value)
+{
+    return ShortestText(value);
 }
 
 bool SameFile(const std::filesystem::path& a, const std::filesystem::path& b)

@@ -20,6 +20,13 @@ void CheckExtension(const std::string& flag, const std::string& file, const std:
 /// it as an output: a folder, a device, a read-only file, a missing or unwritable folder.
 void CheckOutputFile(const std::string& flag, const std::string& file);
 
+/// `value` as the shortest text that reads back as the same double ("0.9999999", "-5", "nan"): what a
+/// range error shows, so a rejected value never looks like one inside the range.
+std::string NumberText(double value);
+/// The same for a float: the shortest text that reads back as the same float ("59.99", a step rate as its
+/// file has it, not 59.9900016784668).
+std::string NumberText(float value);
+
 /// Whether `a` and `b` name one file: the same path once made absolute and normal, or existing files that
 /// are one (a symbolic or hard link). Empty names name no file.
 bool SameFile(const std::filesystem::path& a, const std::filesystem::path& b);

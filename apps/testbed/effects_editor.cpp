@@ -110,9 +110,10 @@ void EffectsEditor::Save(const Session& session)
     {
         return;
     }
+    const std::filesystem::path target = WhereWritten(savePath);
     for (const std::filesystem::path& file : session.SceneFiles())
     {
-        if (SameFile(savePath, file))
+        if (SameFile(target, file))
         {
             message = savePath + ": is a file the testbed's scenes are read from (" + file.string() +
                       "): not overwritten";
@@ -120,7 +121,6 @@ void EffectsEditor::Save(const Session& session)
             return;
         }
     }
-    const std::filesystem::path target = WhereWritten(savePath);
     const std::filesystem::path bundled = Resolved(session.ScenesDir());
     for (std::filesystem::path folder = target.parent_path(); !folder.empty(); folder = folder.parent_path())
     {

@@ -1,28 +1,15 @@
 #include "session.h"
 
+#include "harness/command_line.h"
+
 #include <algorithm>
-#include <array>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-#include <charconv>
 
 namespace cfx::testbed
 {
-
-namespace
-{
-
-// A rate as its file has it: "59.99", not 59.9900016784668.
-std::string RateText(float hz)
-{
-    std::array<char, 32> text{};
-    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), hz);
-    return error == std::errc() ? std::string(text.data(), end) : std::to_string(hz);
-}
-
-} // namespace
 
 Session::~Session()
 {
@@ -80,8 +67,8 @@ std::vector<Diagnostic> Session::Warnings() const
     if (m_file && m_entry == &m_file->entry && sceneHz != testbedHz)
     {
         Diagnostic warning{m_file->path, "stepsPerSecond",
-                           "the scene steps at " + RateText(sceneHz) + " Hz; the testbed steps at " +
-                               RateText(testbedHz) + " Hz"};
+                           "the scene steps at " + NumberText(sceneHz) + " Hz; the testbed steps at " +
+                               NumberText(testbedHz) + " Hz"};
         warning.warning = true;
         warnings.push_back(std::move(warning));
     }

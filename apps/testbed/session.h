@@ -81,8 +81,6 @@ public:
     /// What the scene on show loaded with but may not be what its file meant (Scene::warnings: unknown keys,
     /// dropped vertices), and for a scene file whose stepsPerSecond is not the testbed's 60 Hz, that.
     std::vector<Diagnostic> Warnings() const;
-    /// The RUBE file the scene on show was read from.
-    std::filesystem::path SceneFile() const { return m_scenesDir / m_entry->file; }
     /// Every file the listed scenes are read from: their RUBE files and the registered scenes' effects
     /// files (not a configuration given with --effects, which Save as may update).
     std::vector<std::filesystem::path> SceneFiles() const;

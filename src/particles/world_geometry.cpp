@@ -230,9 +230,10 @@ constexpr std::size_t kMovingItemsPerBox = 8;
 
 // Static segments longer than kPieceLength (m) are swept as pieces of that length, at most kMaxPieces of
 // them (longer pieces beyond): a sweep measures a particle from a segment's first end, and a float's spacing
-// there limits its precision (1 mm particles raining near the middle of a 50 km edge fell through it). Over
-// a piece of length L the sweep is within about L * 2^-23 (3e-5 m for 256 m, 2 mm for the 16 km pieces of a
-// 1,000 km edge). The cap bounds the cache: a file of 999 edges of 2,000 km each made 7.8 million pieces.
+// there limits its precision (1 mm particles raining near the middle of a 50 km edge fell through it). Near
+// a piece's last end the rounding of its ends, its normal and the particle's offset add up to a few float
+// spacings of its length L: the guarantees hold while the radius is at least 4 of them (docs/particles.md).
+// The cap bounds the cache: a file of 999 edges of 2,000 km each made 7.8 million pieces.
 constexpr double kPieceLength = 256.0;
 constexpr double kMaxPieces = 64.0;
 } // namespace

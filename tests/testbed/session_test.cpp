@@ -528,6 +528,16 @@ TEST(TestbedEffectsEditor, DoesNotSaveIntoTheScenesFolderThroughLinks)
     EXPECT_FALSE(std::filesystem::exists(scenes / "x.json"));
     EXPECT_FALSE(std::filesystem::exists(scenes / "sub" / "x.json"));
     EXPECT_FALSE(std::filesystem::exists(scenes / "new.json"));
+    // A link to a listed level that has been deleted since: the write would bring it back as a config.
+    std::filesystem::copy_file(kScenesDir / "grinder.json", dir / "level.json");
+    session.OpenFile(dir / "level.json");
+    session.Open(*FindScene("grinder"));
+    std::filesystem::remove(dir / "level.json");
+    std::filesystem::create_symlink(dir / "level.json", dir / "toLevel.json");
+    editor.savePath = (dir / "toLevel.json").string();
+    editor.Save(session);
+    EXPECT_TRUE(editor.messageIsError) << editor.message;
+    EXPECT_FALSE(std::filesystem::exists(dir / "level.json"));
     // Through a link elsewhere it saves, and names the file the link leads to.
     std::filesystem::create_directory(dir / "elsewhere");
     std::filesystem::create_symlink(dir / "elsewhere" / "fx.json", dir / "toElsewhere.json");
