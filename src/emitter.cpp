@@ -188,6 +188,8 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
         ruleStats.intensityMaxLastStep = 0.0f;
+        ruleStats.approachMaxLastStep = 0.0f;
+        ruleStats.impactsLastStep = 0;
         if (paused)
         {
             continue;
@@ -306,8 +308,12 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
         touch.point = tracked.approachPoint;
         touch.normal = tracked.swapped ? -tracked.approachNormal : tracked.approachNormal;
         touch.approachSpeed = tracked.approachSpeed;
+        context.ruleStats.approachMaxLastStep =
+            std::max(context.ruleStats.approachMaxLastStep, touch.approachSpeed);
         if (context.events.Impact(rule, touch, step.impulse))
         {
+            context.ruleStats.impacts += 1;
+            context.ruleStats.impactsLastStep += 1;
             Burst(context, tracked);
         }
     }

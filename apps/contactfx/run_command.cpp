@@ -20,15 +20,26 @@ namespace cfx::cli
 namespace
 {
 
+// "contactfx demo: default effects, 60 Hz, 20.00 s (1200 steps), seed 1": the summary's first line and the
+// plot's title.
+std::string Headline(const Simulation& simulation, const RunOptions& options, const std::string& what)
+{
+    const EffectsConfig& config = simulation.GetEffects().Config();
+    char time[64];
+    std::snprintf(time, sizeof time, "%.2f s (%llu steps)", static_cast<double>(simulation.Time()),
+                  static_cast<unsigned long long>(simulation.GetEffects().Stats().steps));
+    const std::string effects = (config.name.empty() ? "custom" : config.name) + " effects" +
+                                (options.effects.empty() ? "" : " (" + options.effects + ")");
+    return what + ": " + effects + ", " + NumberText(options.hz) + " Hz, " + time + ", seed " +
+           std::to_string(options.seed);
+}
+
 void PrintSummary(const Simulation& simulation, const RunOptions& options, const std::string& what)
 {
     const Effects& effects = simulation.GetEffects();
     const EffectsConfig& config = effects.Config();
     const EffectsStats& stats = effects.Stats();
-    std::printf("%s: %s effects, %s Hz, %.2f s (%llu steps), seed %llu\n", what.c_str(),
-                config.name.empty() ? "custom" : config.name.c_str(), NumberText(options.hz).c_str(),
-                static_cast<double>(simulation.Time()), static_cast<unsigned long long>(stats.steps),
-                static_cast<unsigned long long>(options.seed));
+    std::printf("%s\n", Headline(simulation, options, what).c_str());
     std::printf("  spawned:");
     for (std::size_t i = 0; i < config.particleTypes.size(); ++i)
     {
@@ -143,7 +154,7 @@ int Simulate(const RunOptions& options, const std::string& what, const std::stri
     }
     if (plotOutput)
     {
-        outputs.Write(*plotOutput, plot.Png(simulation.GetEffects(), what));
+        outputs.Write(*plotOutput, plot.Png(simulation.GetEffects(), Headline(simulation, options, what)));
     }
     // The summary is part of the result: it is printed and flushed before the outputs are committed, so
     // that a failed write of standard output (`> /dev/full`) leaves no output file either. It tells what

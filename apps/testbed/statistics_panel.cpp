@@ -22,12 +22,13 @@ void StatisticsPanel(const Session& session, const StepTimeWindow& times, float 
 
     constexpr ImGuiTableFlags kTable =
         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
-    if (ImGui::BeginTable("rules", 4, kTable))
+    if (ImGui::BeginTable("rules", 5, kTable))
     {
         ImGui::TableSetupColumn("rule");
         ImGui::TableSetupColumn("contacts");
         ImGui::TableSetupColumn("made");
         ImGui::TableSetupColumn("max intensity");
+        ImGui::TableSetupColumn("impacts");
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < config.rules.size(); ++i)
         {
@@ -42,6 +43,8 @@ void StatisticsPanel(const Session& session, const StepTimeWindow& times, float 
             ImGui::Text("%llu", static_cast<unsigned long long>(counts.spawned));
             ImGui::TableNextColumn();
             ImGui::Text("%.2f", static_cast<double>(counts.intensityMaxLastStep));
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(counts.impacts));
         }
         ImGui::EndTable();
     }

@@ -17,6 +17,11 @@ struct RuleStats
     std::uint64_t spawned = 0;     ///< particles emitted in all
     std::uint32_t spawnedLastStep = 0;
     float intensityMaxLastStep = 0.0f; ///< largest sample intensity in the last step
+    /// m/s: the fastest approach of a new touch of the rule's pairs in the last step, whether or not it
+    /// reached impactThreshold (0: no new touch). What the tuning plot sets impactThreshold against.
+    float approachMaxLastStep = 0.0f;
+    std::uint64_t impacts = 0;         ///< impact events (EffectEventType::impact) made in all
+    std::uint32_t impactsLastStep = 0; ///< impact events made in the last step
 };
 
 /// Counters since creation.

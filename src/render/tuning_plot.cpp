@@ -23,6 +23,8 @@ TuningRecorder::TuningRecorder(std::size_t ruleCount, std::size_t maxBuckets)
 {
     m_intensity.assign(m_maxBuckets * m_rules, 0.0f);
     m_spawned.assign(m_maxBuckets * m_rules, 0);
+    m_approach.assign(m_maxBuckets * m_rules, 0.0f);
+    m_impacts.assign(m_maxBuckets * m_rules, 0);
     m_duration.assign(m_maxBuckets, 0.0);
 }
 
@@ -37,6 +39,8 @@ void TuningRecorder::Halve()
             const std::size_t c = (2 * b + 1) * m_rules + r;
             m_intensity[b * m_rules + r] = std::max(m_intensity[a], m_intensity[c]);
             m_spawned[b * m_rules + r] = m_spawned[a] + m_spawned[c];
+            m_approach[b * m_rules + r] = std::max(m_approach[a], m_approach[c]);
+            m_impacts[b * m_rules + r] = m_impacts[a] + m_impacts[c];
         }
         m_duration[b] = m_duration[2 * b] + m_duration[2 * b + 1];
     }
@@ -57,6 +61,8 @@ void TuningRecorder::Record(const EffectsStats& stats, float dt)
         const std::size_t b = m_bucketCount++;
         std::fill_n(m_intensity.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0.0f);
         std::fill_n(m_spawned.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0);
+        std::fill_n(m_approach.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0.0f);
+        std::fill_n(m_impacts.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0);
         m_duration[b] = 0.0;
         m_stepsInLast = 0;
     }
@@ -71,6 +77,9 @@ void TuningRecorder::Record(const EffectsStats& stats, float dt)
         float& intensity = m_intensity[b * m_rules + r];
         intensity = std::max(intensity, stats.rules[r].intensityMaxLastStep);
         m_spawned[b * m_rules + r] += stats.rules[r].spawnedLastStep;
+        float& approach = m_approach[b * m_rules + r];
+        approach = std::max(approach, stats.rules[r].approachMaxLastStep);
+        m_impacts[b * m_rules + r] += stats.rules[r].impactsLastStep;
     }
     m_duration[b] += dt;
     m_seconds += dt;
@@ -82,7 +91,7 @@ namespace
 
 constexpr double kLeft = 84.0;   // px, room for the intensity axis
 constexpr double kRight = 96.0;  // px, room for the rate axis
-constexpr double kHeader = 58.0; // px, title and legend
+constexpr double kHeader = 72.0; // px, title and legend
 constexpr double kFooter = 44.0; // px, time axis
 constexpr double kGap = 14.0;    // px between panels
 
@@ -96,6 +105,9 @@ constexpr Rgb kGrid{0.22, 0.24, 0.30};
 constexpr Rgb kText{0.88, 0.88, 0.90};
 constexpr Rgb kIntensity{0.40, 0.78, 1.00};
 constexpr Rgb kThreshold{1.00, 0.38, 0.38};
+constexpr Rgb kStrip{0.08, 0.09, 0.12};
+constexpr Rgb kSoftTouch{0.45, 0.47, 0.55}; // a new touch below impactThreshold
+constexpr Rgb kImpact{0.95, 0.95, 0.97};    // an impact event
 
 void SetColor(cairo_t* cr, Rgb c, double alpha = 1.0)
 {
@@ -152,6 +164,8 @@ struct Column
     double duration = 0.0; // s
     float intensity = 0.0f;
     std::uint64_t spawned = 0;
+    float approach = 0.0f; // m/s, fastest new touch
+    std::uint64_t impacts = 0;
     double Rate() const { return static_cast<double>(spawned) / duration; }
 };
 
@@ -163,12 +177,14 @@ std::vector<Column> Columns(const TuningRecorder& recorder, std::size_t rule, do
     {
         if (columns.empty() || columns.back().duration >= minSeconds)
         {
-            columns.push_back(Column{t, 0.0, 0.0f, 0});
+            columns.push_back(Column{.start = t});
         }
         Column& column = columns.back();
         column.duration += recorder.Duration(b);
         column.intensity = std::max(column.intensity, recorder.Intensity(b, rule));
         column.spawned += recorder.Spawned(b, rule);
+        column.approach = std::max(column.approach, recorder.Approach(b, rule));
+        column.impacts += recorder.Impacts(b, rule);
         t += recorder.Duration(b);
     }
     return columns;
@@ -183,21 +199,95 @@ void VerticalText(cairo_t* cr, double x, double y, const std::string& text)
     cairo_restore(cr);
 }
 
-void DrawPanel(cairo_t* cr, const Panel& p, const TuningRecorder& recorder, std::size_t rule,
+/// A dashed level line across `p` at `y`, labelled at its right end.
+void LevelLine(cairo_t* cr, const Panel& p, double y, Rgb color, const std::string& label)
+{
+    const double dash[] = {6.0, 4.0};
+    cairo_set_dash(cr, dash, 2, 0.0);
+    SetColor(cr, color);
+    cairo_move_to(cr, p.x, y);
+    cairo_line_to(cr, p.x + p.width, y);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    Text(cr, p.x + p.width - 4.0, y - 4.0, label, 1.0);
+}
+
+/// The strip under a rule's chart: each column's fastest new touch as a bar of its approach speed, grey
+/// below impactThreshold, white where it made an impact event, in the particle's colour where that impact
+/// burst; the thresholds as dashed lines.
+void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& columns, double seconds,
+                     const RuleDef& def, Rgb particleColor)
+{
+    const double burstFrom = std::max(def.impactThreshold, def.burstThreshold);
+    const bool bursts = def.burstPerSpeed > 0.0f;
+    float peak = 0.0f;
+    for (const Column& column : columns)
+    {
+        peak = std::max(peak, column.approach);
+    }
+    const double top =
+        std::max({static_cast<double>(peak), 1.5 * (bursts ? burstFrom : def.impactThreshold), 1e-3}) * 1.15;
+    auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
+    auto yAt = [&](double v) { return p.y + p.height * (1.0 - v / top); };
+
+    SetColor(cr, kStrip);
+    cairo_rectangle(cr, p.x, p.y, p.width, p.height);
+    cairo_fill(cr);
+    cairo_set_font_size(cr, 10.0);
+    const double step = NiceStep(top, 2);
+    SetColor(cr, kImpact);
+    for (double v = 0.0; v <= top + 1e-9; v += step)
+    {
+        // A tick near the top is labelled inside the strip, clear of the chart's lowest label above it.
+        Text(cr, p.x - 6.0, std::max(yAt(v) + 4.0, p.y + 10.0), detail::TickText(v, step), 1.0);
+    }
+    VerticalText(cr, p.x - 52.0, p.y + 0.5 * p.height, "m/s");
+    for (const Column& column : columns)
+    {
+        if (column.approach <= 0.0f)
+        {
+            continue;
+        }
+        const bool burst = column.impacts > 0 && bursts && column.approach > burstFrom;
+        SetColor(cr, burst ? particleColor : column.impacts > 0 ? kImpact : kSoftTouch);
+        const double x0 = xAt(column.start);
+        const double x1 = std::max(xAt(column.start + column.duration) - 1.0, x0 + 1.0);
+        cairo_rectangle(cr, x0, yAt(column.approach), x1 - x0, yAt(0.0) - yAt(column.approach));
+        cairo_fill(cr);
+    }
+    cairo_set_line_width(cr, 1.0);
+    LevelLine(cr, p, yAt(def.impactThreshold), kThreshold, "impact " + Number(def.impactThreshold) + " m/s");
+    if (bursts && def.burstThreshold > def.impactThreshold)
+    {
+        LevelLine(cr, p, yAt(def.burstThreshold), particleColor,
+                  "burst " + Number(def.burstThreshold) + " m/s");
+    }
+    SetColor(cr, kText);
+    Text(cr, p.x + 8.0, p.y + 12.0, "new touches: approach speed");
+}
+
+void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, std::size_t rule,
                const RuleDef& def, Rgb particleColor)
 {
     constexpr double kColumnPixels = 3.0;
+    // The chart on top, the impact strip under it.
+    const double stripHeight = std::round(std::clamp(0.28 * panel.height, 20.0, 80.0));
+    const Panel p{panel.x, panel.y, panel.width, panel.height - stripHeight - 2.0};
     const double seconds = std::max(recorder.Seconds(), 1e-9);
     const std::vector<Column> columns = Columns(recorder, rule, seconds * kColumnPixels / p.width);
     float peak = 0.0f;
     double peakRate = 0.0;
     std::uint64_t total = 0;
+    std::uint64_t impacts = 0;
     for (const Column& column : columns)
     {
         peak = std::max(peak, column.intensity);
         peakRate = std::max(peakRate, column.Rate());
         total += column.spawned;
+        impacts += column.impacts;
     }
+    DrawImpactStrip(cr, Panel{p.x, p.y + p.height + 2.0, p.width, stripHeight}, columns, seconds, def,
+                    particleColor);
     const double top = std::max({static_cast<double>(peak), 1.5 * def.threshold, 1e-3}) * 1.1;
     const double rateTop = std::max(peakRate, 1.0) * 1.1;
     auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
@@ -265,21 +355,16 @@ void DrawPanel(cairo_t* cr, const Panel& p, const TuningRecorder& recorder, std:
     cairo_stroke(cr);
 
     // The threshold.
-    const double dash[] = {6.0, 4.0};
-    cairo_set_dash(cr, dash, 2, 0.0);
-    SetColor(cr, kThreshold);
-    cairo_move_to(cr, p.x, yAt(def.threshold));
-    cairo_line_to(cr, p.x + p.width, yAt(def.threshold));
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0.0);
-    Text(cr, p.x + p.width - 4.0, yAt(def.threshold) - 4.0, "threshold " + Number(def.threshold), 1.0);
+    cairo_set_line_width(cr, 1.5);
+    LevelLine(cr, p, yAt(def.threshold), kThreshold, "threshold " + Number(def.threshold));
 
     // Label.
     cairo_set_font_size(cr, 13.0);
     SetColor(cr, kText);
     Text(cr, p.x + 8.0, p.y + 17.0,
          def.materialA + " + " + def.materialB + "  \xE2\x86\x92  " + def.particleType + "   (" +
-             std::to_string(total) + " particles)");
+             std::to_string(total) + " particles, " + std::to_string(impacts) +
+             (impacts == 1 ? " impact)" : " impacts)"));
 }
 
 } // namespace
@@ -313,7 +398,9 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
     SetColor(cr, kThreshold);
     Text(cr, kLeft + 220.0, 44.0, "- - threshold");
     SetColor(cr, kText);
-    Text(cr, kLeft + 330.0, 44.0, "filled: particles emitted per second (right axis); shaded: emitting");
+    Text(cr, kLeft + 330.0, 44.0, "filled: particles emitted per second (right axis); shaded: emitting;");
+    Text(cr, kLeft + 330.0, 58.0,
+         "strip: fastest new touch (grey: below the impact threshold, white: impact, colour: burst)");
 
     const double panelWidth = width - kLeft - kRight;
     for (std::size_t r = 0; r < rules; ++r)

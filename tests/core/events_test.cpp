@@ -659,6 +659,56 @@ TEST(Events, GentleTouchIsNoImpactAndThresholdIsPerRule)
     EXPECT_EQ(impactsFor(6.0f, 1.0f), 0);
 }
 
+// The rule's stats carry each step's fastest new touch, impact or not, and count the impacts: what the
+// tuning plot sets impactThreshold against (docs/rendering.md).
+TEST(Events, RuleStatsCountImpactsAndKeepTheFastestNewTouchBelowTheThresholdToo)
+{
+    struct Touches
+    {
+        int impactEvents = 0;
+        std::uint64_t impacts = 0;
+        std::uint32_t impactsInSteps = 0;
+        int stepsWithATouch = 0;
+        float fastest = 0.0f;
+    };
+    auto touchesFrom = [](float height)
+    {
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f + height), 0.5f, 0.5f, 0.5f);
+        Effects& fx = scene.Attach(); // steel on concrete: impactThreshold 2 m/s
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        Touches touches;
+        for (int i = 0; i < 90; ++i)
+        {
+            scene.Step();
+            const RuleStats& rule = fx.Stats().rules[0];
+            for (const EffectEvent& event : fx.Events())
+            {
+                touches.impactEvents += event.type == EffectEventType::impact ? 1 : 0;
+            }
+            touches.impactsInSteps += rule.impactsLastStep;
+            touches.stepsWithATouch += rule.approachMaxLastStep > 0.0f ? 1 : 0;
+            touches.fastest = std::max(touches.fastest, rule.approachMaxLastStep);
+            touches.impacts = rule.impacts;
+        }
+        return touches;
+    };
+    const Touches soft = touchesFrom(0.05f); // about 1 m/s: a new touch, no impact
+    EXPECT_EQ(soft.impactEvents, 0);
+    EXPECT_EQ(soft.impacts, 0u);
+    EXPECT_GE(soft.stepsWithATouch, 1);
+    EXPECT_GT(soft.fastest, 0.5f);
+    EXPECT_LT(soft.fastest, 2.0f);
+    const Touches hard = touchesFrom(1.0f); // about 4.4 m/s: one impact
+    EXPECT_EQ(hard.impactEvents, 1);
+    EXPECT_EQ(hard.impacts, 1u);
+    EXPECT_EQ(hard.impactsInSteps, 1u);
+    EXPECT_GT(hard.fastest, 4.0f);
+    EXPECT_LT(hard.fastest, 5.0f);
+}
+
 // A scrape is one per body pair: a block sliding over a chain of short segments (several contacts at once,
 // handed from segment to segment) is one scrape from start to stop.
 TEST(Events, BlockSlidingOverChainSegmentsIsOneScrape)

@@ -6,8 +6,11 @@
 #include "png_header.h"
 
 #include <cairo.h>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace cfx::test
 {
@@ -24,8 +27,69 @@ EffectsStats StepStats(std::size_t rules, int step)
     {
         stats.rules[r].intensityMaxLastStep = static_cast<float>((step * 7 + static_cast<int>(r) * 3) % 11);
         stats.rules[r].spawnedLastStep = static_cast<std::uint32_t>((step + static_cast<int>(r)) % 4);
+        stats.rules[r].approachMaxLastStep = static_cast<float>((step * 5 + static_cast<int>(r)) % 13) * 0.5f;
+        stats.rules[r].impactsLastStep =
+            static_cast<std::uint32_t>((step * 3 + static_cast<int>(r)) % 5 == 0);
     }
     return stats;
+}
+
+// A decoded PNG: Cairo's ARGB32 pixels, B, G, R, A in memory on little-endian machines.
+struct Picture
+{
+    int width = 0;
+    int height = 0;
+    std::vector<unsigned char> bgra; // width * 4 bytes a row
+
+    const unsigned char* At(int x, int y) const
+    {
+        return bgra.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x) * 4;
+    }
+    // Whether a pixel of column x is the colour (r, g, b) (0..255), give or take 1.
+    bool ColumnHas(int x, int r, int g, int b) const
+    {
+        for (int y = 0; y < height; ++y)
+        {
+            const unsigned char* p = At(x, y);
+            if (std::abs(p[2] - r) <= 1 && std::abs(p[1] - g) <= 1 && std::abs(p[0] - b) <= 1)
+            {
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+Picture Decode(const std::string& png)
+{
+    std::size_t read = 0;
+    const auto reader = [](void* closure, unsigned char* data, unsigned int length)
+    {
+        auto* source = static_cast<std::pair<const std::string*, std::size_t*>*>(closure);
+        if (*source->second + length > source->first->size())
+        {
+            return CAIRO_STATUS_READ_ERROR;
+        }
+        std::memcpy(data, source->first->data() + *source->second, length);
+        *source->second += length;
+        return CAIRO_STATUS_SUCCESS;
+    };
+    std::pair<const std::string*, std::size_t*> source{&png, &read};
+    cairo_surface_t* image = cairo_image_surface_create_from_png_stream(reader, &source);
+    Picture picture;
+    if (cairo_surface_status(image) == CAIRO_STATUS_SUCCESS)
+    {
+        picture.width = cairo_image_surface_get_width(image);
+        picture.height = cairo_image_surface_get_height(image);
+        const int stride = cairo_image_surface_get_stride(image);
+        const unsigned char* data = cairo_image_surface_get_data(image);
+        for (int y = 0; y < picture.height; ++y)
+        {
+            picture.bgra.insert(picture.bgra.end(), data + y * stride, data + y * stride + 4 * picture.width);
+        }
+    }
+    cairo_surface_destroy(image);
+    return picture;
 }
 
 } // namespace
@@ -37,6 +101,8 @@ TEST(TuningRecorder, FoldsAnyNumberOfStepsIntoBoundedBucketsKeepingTotalsAndPeak
     render::TuningRecorder recorder(kRules, kMaxBuckets);
     std::vector<std::uint64_t> spawned(kRules, 0);
     std::vector<float> peak(kRules, 0.0f);
+    std::vector<std::uint64_t> impacts(kRules, 0);
+    std::vector<float> fastest(kRules, 0.0f);
     constexpr int kSteps = 1001;
     constexpr float kDt = 0.01f;
     for (int step = 0; step < kSteps; ++step)
@@ -47,6 +113,8 @@ TEST(TuningRecorder, FoldsAnyNumberOfStepsIntoBoundedBucketsKeepingTotalsAndPeak
         {
             spawned[r] += stats.rules[r].spawnedLastStep;
             peak[r] = std::max(peak[r], stats.rules[r].intensityMaxLastStep);
+            impacts[r] += stats.rules[r].impactsLastStep;
+            fastest[r] = std::max(fastest[r], stats.rules[r].approachMaxLastStep);
         }
         ASSERT_LE(recorder.BucketCount(), kMaxBuckets);
     }
@@ -55,14 +123,21 @@ TEST(TuningRecorder, FoldsAnyNumberOfStepsIntoBoundedBucketsKeepingTotalsAndPeak
     for (std::size_t r = 0; r < kRules; ++r)
     {
         std::uint64_t total = 0;
+        std::uint64_t impactTotal = 0;
         float largest = 0.0f;
+        float largestApproach = 0.0f;
         for (std::size_t b = 0; b < recorder.BucketCount(); ++b)
         {
             total += recorder.Spawned(b, r);
             largest = std::max(largest, recorder.Intensity(b, r));
+            impactTotal += recorder.Impacts(b, r);
+            largestApproach = std::max(largestApproach, recorder.Approach(b, r));
         }
         EXPECT_EQ(total, spawned[r]) << r;
         EXPECT_EQ(largest, peak[r]) << r;
+        EXPECT_EQ(impactTotal, impacts[r]) << r;
+        EXPECT_GT(impactTotal, 100u) << r;
+        EXPECT_EQ(largestApproach, fastest[r]) << r;
     }
     for (std::size_t b = 0; b < recorder.BucketCount(); ++b)
     {
@@ -85,6 +160,8 @@ TEST(TuningRecorder, KeepsEveryStepWhileThereIsRoom)
         const EffectsStats stats = StepStats(1, static_cast<int>(b));
         EXPECT_EQ(recorder.Intensity(b, 0), stats.rules[0].intensityMaxLastStep);
         EXPECT_EQ(recorder.Spawned(b, 0), stats.rules[0].spawnedLastStep);
+        EXPECT_EQ(recorder.Approach(b, 0), stats.rules[0].approachMaxLastStep);
+        EXPECT_EQ(recorder.Impacts(b, 0), stats.rules[0].impactsLastStep);
         EXPECT_EQ(recorder.Duration(b), 0.5);
     }
 }
@@ -137,41 +214,87 @@ TEST(TuningPlot, OneStepHasAnIntensityLine)
     EffectsStats stats = StepStats(config.rules.size(), 0);
     stats.rules[0].intensityMaxLastStep = 30.0f;
     recorder.Record(stats, 1.0f / 60.0f);
-    const std::string png = render::TuningPlotPng(recorder, config, "one step", 640, 100);
-    std::size_t read = 0;
-    const auto reader = [](void* closure, unsigned char* data, unsigned int length)
-    {
-        auto* source = static_cast<std::pair<const std::string*, std::size_t*>*>(closure);
-        if (*source->second + length > source->first->size())
-        {
-            return CAIRO_STATUS_READ_ERROR;
-        }
-        std::memcpy(data, source->first->data() + *source->second, length);
-        *source->second += length;
-        return CAIRO_STATUS_SUCCESS;
-    };
-    std::pair<const std::string*, std::size_t*> source{&png, &read};
-    cairo_surface_t* image = cairo_image_surface_create_from_png_stream(reader, &source);
-    ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
-    const int width = cairo_image_surface_get_width(image);
-    const int height = cairo_image_surface_get_height(image);
-    const int stride = cairo_image_surface_get_stride(image);
-    const unsigned char* data = cairo_image_surface_get_data(image);
+    const Picture picture = Decode(render::TuningPlotPng(recorder, config, "one step", 640, 100));
+    ASSERT_GT(picture.width, 0);
+    const int width = picture.width;
     // Columns of the middle half of the picture (no axis labels there) with a pixel of the intensity's blue
-    // (0.40, 0.78, 1.00), more or less: Cairo stores B, G, R, A on little-endian machines.
+    // (0.40, 0.78, 1.00), more or less.
     int columns = 0;
     for (int x = width / 4; x < 3 * width / 4; ++x)
     {
         bool blue = false;
-        for (int y = 0; y < height; ++y)
+        for (int y = 0; y < picture.height; ++y)
         {
-            const unsigned char* p = data + y * stride + 4 * x;
+            const unsigned char* p = picture.At(x, y);
             blue = blue || (p[0] > 120 && p[0] > p[2] + 60);
         }
         columns += blue ? 1 : 0;
     }
-    cairo_surface_destroy(image);
     EXPECT_EQ(columns, 3 * width / 4 - width / 4);
+}
+
+// Under each rule's chart, the strip draws each column's fastest new touch: grey below impactThreshold,
+// white where it made an impact, in the particle's colour where that impact burst. A rule whose impacts do
+// not burst draws them white.
+TEST(TuningPlot, TheImpactStripTellsSoftTouchesImpactsAndBurstsApart)
+{
+    auto plot = [](float burstPerSpeed)
+    {
+        EffectsConfig config = DefaultPreset();
+        config.rules.resize(1); // one panel: every colour in the picture is its
+        config.rules[0].impactThreshold = 2.0f;
+        config.rules[0].burstThreshold = 0.0f;
+        config.rules[0].burstPerSpeed = burstPerSpeed;
+        render::TuningRecorder recorder(1);
+        for (int step = 0; step < 30; ++step)
+        {
+            EffectsStats stats;
+            stats.rules.resize(1);
+            if (step < 10)
+            {
+                stats.rules[0].approachMaxLastStep = 1.0f; // soft
+            }
+            else if (step >= 20)
+            {
+                stats.rules[0].approachMaxLastStep = 6.0f; // an impact every step
+                stats.rules[0].impactsLastStep = 1;
+            }
+            recorder.Record(stats, 1.0f / 60.0f);
+        }
+        return std::pair{config, Decode(render::TuningPlotPng(recorder, config, "impacts", 640, 100))};
+    };
+    // The plot's panel spans x = 84 .. 544 for 0.5 s: steps 0-9 at 84 .. 237, 20-29 at 391 .. 544.
+    const auto [bursting, withBursts] = plot(5.0f);
+    const auto [quiet, withoutBursts] = plot(0.0f);
+    ASSERT_GT(withBursts.width, 0);
+    ASSERT_GT(withoutBursts.width, 0);
+    const Color& c =
+        bursting.particleTypes[bursting.FindParticleType(bursting.rules[0].particleType).index].colorStart;
+    const int r = static_cast<int>(std::lround(c.r * 255.0f));
+    const int g = static_cast<int>(std::lround(c.g * 255.0f));
+    const int b = static_cast<int>(std::lround(c.b * 255.0f));
+    auto columnsWith = [](const Picture& picture, int from, int to, int red, int green, int blue)
+    {
+        int count = 0;
+        for (int x = from; x < to; ++x)
+        {
+            count += picture.ColumnHas(x, red, green, blue) ? 1 : 0;
+        }
+        return count;
+    };
+    constexpr int kGrey[] = {115, 120, 140};  // kSoftTouch
+    constexpr int kWhite[] = {242, 242, 247}; // kImpact
+    for (const Picture* picture : {&withBursts, &withoutBursts})
+    {
+        EXPECT_GT(columnsWith(*picture, 100, 220, kGrey[0], kGrey[1], kGrey[2]), 100);
+        EXPECT_EQ(columnsWith(*picture, 250, 380, kGrey[0], kGrey[1], kGrey[2]), 0) << "no touch, no bar";
+        EXPECT_EQ(columnsWith(*picture, 250, 380, kWhite[0], kWhite[1], kWhite[2]), 0);
+        EXPECT_EQ(columnsWith(*picture, 100, 220, kWhite[0], kWhite[1], kWhite[2]), 0) << "soft: no impact";
+    }
+    EXPECT_GT(columnsWith(withBursts, 400, 530, r, g, b), 100);
+    EXPECT_EQ(columnsWith(withBursts, 400, 530, kWhite[0], kWhite[1], kWhite[2]), 0);
+    EXPECT_GT(columnsWith(withoutBursts, 400, 530, kWhite[0], kWhite[1], kWhite[2]), 100);
+    EXPECT_EQ(columnsWith(withoutBursts, 400, 530, r, g, b), 0);
 }
 
 } // namespace cfx::test

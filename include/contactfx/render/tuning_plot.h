@@ -2,10 +2,11 @@
 //
 // Where does an effect start and stop? The plot answers with one panel per rule: the rule's largest
 // sample intensity over time against its threshold (a dashed line), and the particles it emitted per
-// second, with the stretches where it emitted shaded. A recorder samples Effects::Stats() after each
-// step; it keeps at most a fixed number of time buckets (each the maximum intensity and the particle
-// count of its steps), doubling the bucket length when full, so a run of any length fits in bounded
-// memory.
+// second, with the stretches where it emitted shaded; below them, a strip of the new touches' approach
+// speeds against impactThreshold (and burstThreshold), which says which touches became impacts. A
+// recorder samples Effects::Stats() after each step; it keeps at most a fixed number of time buckets (each
+// the maximum intensity and approach speed, and the particle and impact counts of its steps), doubling the
+// bucket length when full, so a run of any length fits in bounded memory.
 #pragma once
 
 #include "contactfx/config.h"
@@ -30,7 +31,8 @@ public:
     /// even number) time buckets.
     explicit TuningRecorder(std::size_t ruleCount, std::size_t maxBuckets = 1200);
 
-    /// Takes one step's stats (rules[i].intensityMaxLastStep, spawnedLastStep); `dt` in seconds (> 0).
+    /// Takes one step's stats (rules[i].intensityMaxLastStep, spawnedLastStep, approachMaxLastStep,
+    /// impactsLastStep); `dt` in seconds (> 0).
     void Record(const EffectsStats& stats, float dt);
 
     std::size_t RuleCount() const { return m_rules; }
@@ -49,6 +51,13 @@ public:
     {
         return m_spawned[bucket * m_rules + rule];
     }
+    /// Fastest approach (m/s) of a new touch of rule `rule` in bucket `bucket`, impact or not; 0: none.
+    float Approach(std::size_t bucket, std::size_t rule) const { return m_approach[bucket * m_rules + rule]; }
+    /// Impact events rule `rule` made in bucket `bucket`.
+    std::uint64_t Impacts(std::size_t bucket, std::size_t rule) const
+    {
+        return m_impacts[bucket * m_rules + rule];
+    }
     /// s of simulated time in bucket `bucket`.
     double Duration(std::size_t bucket) const { return m_duration[bucket]; }
 
@@ -64,12 +73,14 @@ private:
     double m_seconds = 0.0;
     std::vector<float> m_intensity;       // bucket-major
     std::vector<std::uint64_t> m_spawned; // bucket-major
+    std::vector<float> m_approach;        // bucket-major
+    std::vector<std::uint64_t> m_impacts; // bucket-major
     std::vector<double> m_duration;       // per bucket
 };
 
 /// The plot of `recorder`'s run of `config` as PNG bytes: `width` x (header + one panel per rule) px.
-/// `title` heads the picture. Throws std::invalid_argument when the recorder and the configuration
-/// disagree on the rule count.
+/// `title` heads the picture (say which scene and which effects config ran). Throws std::invalid_argument
+/// when the recorder and the configuration disagree on the rule count.
 std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& config,
                           const std::string& title, int width = 1200, int panelHeight = 170);
 
