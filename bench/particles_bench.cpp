@@ -20,6 +20,9 @@
 // step is not timed). The same ground either way: the time should not grow with N for a chain.
 //
 // FarFixture/D: particles raining on a finely split chain, with one static box far away (see below).
+//
+// TileBuild/N and TileScan/N/W: the static cache of a tile map of N boxes: one build, and one step's scan
+// with nothing changed, watched or not (see below).
 #include "particles/world_geometry.h"
 #include "scenes/debris_bench.h"
 #include "scenes/particle_bench.h"
@@ -132,6 +135,53 @@ void StaticScan(benchmark::State& state)
     for (auto _ : state)
     {
         geometry.Scan(scene.World(), nullptr, 1.0f / cfx::bench::kBenchHz);
+    }
+    state.counters["builds"] = static_cast<double>(geometry.StaticBuilds());
+}
+
+// A tile map of N static 0.5 m boxes on one body, rows of 1,000 at round coordinates.
+void AddTiles(b2World& world, int tiles)
+{
+    b2BodyDef def;
+    b2Body* ground = world.CreateBody(&def);
+    for (int i = 0; i < tiles; ++i)
+    {
+        b2PolygonShape tile;
+        tile.SetAsBox(0.25f, 0.25f,
+                      b2Vec2(-250.0f + 0.5f * static_cast<float>(i % 1000),
+                             -0.25f - 0.5f * static_cast<float>(i / 1000)),
+                      0.0f);
+        ground->CreateFixture(&tile, 0.0f);
+    }
+}
+
+// TileBuild/N: one build of the static cache of N tiles (what a level load, or any change of a watched
+// static fixture, costs). TileScan/N/W: a step's scan of the same level with nothing changed, watched (W = 1:
+// every fixture hashed) or not (W = 0, ParticleSystemOptions::watchStaticGeometry false).
+void TileBuild(benchmark::State& state)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    AddTiles(world, static_cast<int>(state.range(0)));
+    cfx::particles::WorldGeometry geometry;
+    for (auto _ : state)
+    {
+        geometry.Invalidate();
+        benchmark::DoNotOptimize(geometry.UpdateStatic(world, cfx::particles::StaticWatch::onRequest));
+    }
+    state.counters["primitives"] = static_cast<double>(geometry.StaticPrimitives());
+    state.counters["bytes"] = static_cast<double>(geometry.Bytes());
+}
+
+void TileScan(benchmark::State& state)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    AddTiles(world, static_cast<int>(state.range(0)));
+    const auto watch =
+        state.range(1) != 0 ? cfx::particles::StaticWatch::everyStep : cfx::particles::StaticWatch::onRequest;
+    cfx::particles::WorldGeometry geometry;
+    for (auto _ : state)
+    {
+        geometry.Scan(world, nullptr, 1.0f / cfx::bench::kBenchHz, watch);
     }
     state.counters["builds"] = static_cast<double>(geometry.StaticBuilds());
 }
@@ -292,6 +342,13 @@ void FarFixture(benchmark::State& state)
 } // namespace
 
 BENCHMARK(StaticScan);
+BENCHMARK(TileBuild)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(TileScan)
+    ->Args({10000, 1})
+    ->Args({10000, 0})
+    ->Args({100000, 1})
+    ->Args({100000, 0})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(StaticSweep);
 BENCHMARK(Pool)->Arg(1000)->Arg(10000)->Arg(50000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(PoolOneThread)->Arg(1000)->Arg(10000)->Arg(50000)->Arg(100000)->Unit(benchmark::kMillisecond);

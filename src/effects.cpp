@@ -298,8 +298,16 @@ void Effects::Step(float dt)
     m_stats.crossings = m_particles.Counters().crossings;
     m_stats.nonFinite = m_particles.Counters().nonFinite;
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
+    m_stats.staticGeometryBuilds = m_particles.StaticGeometryBuilds();
     m_stats.staleMaterials = m_internals->materials.Stale();
     NotifyListener();
+}
+
+bool Effects::BuildStaticGeometry()
+{
+    const bool built = m_particles.BuildStaticGeometry();
+    m_stats.staticGeometryBuilds = m_particles.StaticGeometryBuilds();
+    return built;
 }
 
 void Effects::ShiftOrigin(b2Vec2 newOrigin)

@@ -113,6 +113,7 @@ struct ParticleSystem::Impl
     RecyclePolicy policy = RecyclePolicy::oldest;
     unsigned threads = 1;
     std::uint32_t minPerThread = 1;
+    particles::StaticWatch staticWatch = particles::StaticWatch::everyStep;
 
     // Hot: touched by every step, one entry per slot.
     std::vector<float> positionX, positionY, velocityX, velocityY, life;
@@ -402,6 +403,8 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     impl.threads = std::clamp(options.threads == 0 ? hardware : options.threads, 1u, kMaxThreads);
     impl.minPerThread = std::max<std::uint32_t>(1, options.minParticlesPerThread);
+    impl.staticWatch =
+        options.watchStaticGeometry ? particles::StaticWatch::everyStep : particles::StaticWatch::onRequest;
     // The helpers the fullest pool can use, now: starting a thread allocates, and a step never does.
     impl.workers.Start(PartsFor(m_capacity, impl.minPerThread, impl.threads));
     impl.positionX.resize(m_capacity);
@@ -651,7 +654,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
     if (scan)
     {
         const detail::ParticleBodyFilter particleBodies(*this);
-        impl.geometry.Scan(impl.world, impl.anyBodyBacked ? &particleBodies : nullptr, dt);
+        impl.geometry.Scan(impl.world, impl.anyBodyBacked ? &particleBodies : nullptr, dt, impl.staticWatch);
         trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
         trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
         impl.lastDt = dt;
@@ -763,6 +766,12 @@ void ParticleSystem::ShiftOrigin(b2Vec2 newOrigin)
 void ParticleSystem::InvalidateStaticGeometry()
 {
     m_impl->geometry.Invalidate();
+}
+
+bool ParticleSystem::BuildStaticGeometry()
+{
+    Impl& impl = *m_impl;
+    return impl.geometry.UpdateStatic(impl.world, impl.staticWatch);
 }
 
 ParticleView ParticleSystem::View() const

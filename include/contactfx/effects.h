@@ -126,6 +126,13 @@ public:
     /// "newOrigin") when it is not finite; nothing changes then.
     void ShiftOrigin(b2Vec2 newOrigin);
 
+    /// The particles' static geometry cache (ParticleSystem): build it now, after loading a level, rather
+    /// than in the first step with a colliding particle (returns whether it built); or, with
+    /// EffectsDef::particles.watchStaticGeometry false, say that the static geometry changed. See
+    /// docs/particles.md, Static geometry. EffectsStats::staticGeometryBuilds counts the builds.
+    bool BuildStaticGeometry();
+    void InvalidateStaticGeometry() { m_particles.InvalidateStaticGeometry(); }
+
     /// Whether `body` is the Box2D body of one of this object's body-backed particles (ParticleBackend::
     /// body, the tutorial preset). Such bodies are in the world like any other: the application's contact
     /// and destruction listeners hear of their contacts and fixtures, and its world queries meet them;

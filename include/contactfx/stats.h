@@ -59,6 +59,9 @@ struct EffectsStats
     /// Body steps in which a body was left out of particle collision because its state, or its pose at
     /// the start of the step, was not finite or beyond 1e7 (ParticleCounters::skippedBodies).
     std::uint64_t skippedBodies = 0;
+    /// Times the particles' static geometry cache was built (docs/particles.md, Static geometry): once for
+    /// a level that never changes, and once more after each change of its static fixtures.
+    std::uint64_t staticGeometryBuilds = 0;
     /// Materials dropped because their fixture had been destroyed without Effects::ForgetFixture and a
     /// different fixture (another body, shape or geometry) took its address: it did not inherit them.
     /// Non-zero means a missing ForgetFixture call (docs/api.md).

@@ -32,6 +32,19 @@ std::uint64_t Word(b2Vec2 value)
            std::bit_cast<std::uint32_t>(value.y);
 }
 
+// Spreads every bit of `hash` over all the others (MurmurHash3's 64-bit finalizer). FNV's multiplications
+// carry bits only upwards, so a word's high half (a point's x) never reaches the low bits that pick a
+// hash table's slot: without this, the tiles of a row all probed the same slots.
+std::uint64_t Scramble(std::uint64_t hash)
+{
+    hash ^= hash >> 33u;
+    hash *= 0xff51afd7ed558ccdULL;
+    hash ^= hash >> 33u;
+    hash *= 0xc4ceb9fe1a85ec53ULL;
+    hash ^= hash >> 33u;
+    return hash;
+}
+
 // Whether a particle bounces off two materials alike: friction, restitution and threshold, bit for bit.
 // Not the body: the same fixture duplicated on another body is still met once (its hits name the first).
 bool SameResponse(const SurfaceMaterial& x, const SurfaceMaterial& y)
@@ -41,28 +54,35 @@ bool SameResponse(const SurfaceMaterial& x, const SurfaceMaterial& y)
            std::bit_cast<std::uint32_t>(x.restSpeed) == std::bit_cast<std::uint32_t>(y.restSpeed);
 }
 
-// FNV-1a over 64-bit words.
+// FNV-1a over 64-bit words, dealt in turn to four chains that run side by side: one chain waits a
+// multiplication's latency per word, and the signature hashes every static fixture every step.
 class Signature
 {
+    static constexpr std::uint64_t kLanes = 4;
+
 public:
-    void Add(std::uint64_t word) { m_hash = (m_hash ^ word) * kFnvPrime; }
+    void Add(std::uint64_t word)
+    {
+        std::uint64_t& lane = m_lanes[m_words++ % kLanes];
+        lane = (lane ^ word) * kFnvPrime;
+    }
     void Add(const void* pointer)
     {
         Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(pointer)));
     }
     void Add(float value) { Add(static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(value))); }
     void Add(b2Vec2 value) { Add(Word(value)); }
-    /// `count` points. A chain has hundreds, and one FNV chain over them waits a multiplication's latency
-    /// per word; four chains, one for every fourth point, run side by side.
+    /// `count` points: a chain has hundreds, hashed in four chains of their own kept in registers (the
+    /// lanes above live in memory), then added with the count.
     void Add(const b2Vec2* points, int count)
     {
-        std::uint64_t lanes[4] = {kFnvBasis, kFnvBasis + 1, kFnvBasis + 2, kFnvBasis + 3};
+        std::uint64_t lanes[kLanes] = {kFnvBasis, kFnvBasis + 1, kFnvBasis + 2, kFnvBasis + 3};
         int point = 0;
         for (; point + 4 <= count; point += 4)
         {
-            for (int lane = 0; lane < 4; ++lane)
+            for (std::uint64_t lane = 0; lane < kLanes; ++lane)
             {
-                lanes[lane] = (lanes[lane] ^ Word(points[point + lane])) * kFnvPrime;
+                lanes[lane] = (lanes[lane] ^ Word(points[point + static_cast<int>(lane)])) * kFnvPrime;
             }
         }
         for (; point < count; ++point)
@@ -112,15 +132,41 @@ public:
         }
     }
     /// Never 0, so that 0 can mean "invalid".
-    std::uint64_t Value() const { return m_hash == 0 ? 1 : m_hash; }
+    std::uint64_t Value() const
+    {
+        std::uint64_t hash = kFnvBasis;
+        for (const std::uint64_t lane : m_lanes)
+        {
+            hash = (hash ^ lane) * kFnvPrime;
+        }
+        hash = (hash ^ m_words) * kFnvPrime;
+        return hash == 0 ? 1 : hash;
+    }
 
 private:
-    std::uint64_t m_hash = kFnvBasis;
+    std::uint64_t m_lanes[kLanes] = {kFnvBasis, kFnvBasis + 1, kFnvBasis + 2, kFnvBasis + 3};
+    std::uint64_t m_words = 0;
 };
 
-void AddStaticBody(Signature& signature, const b2Body& body)
+// Whether a body's state is one to simulate with (see kMaxCoordinate): its position, rotation, centre and
+// velocities.
+bool IsSane(const b2Body& body)
+{
+    const b2Transform& xf = body.GetTransform();
+    return Sane(xf.p) & Sane(b2Vec2(xf.q.c, xf.q.s)) & Sane(body.GetWorldCenter()) &
+           Sane(body.GetLinearVelocity()) & Sane(b2Vec2(body.GetAngularVelocity(), 0.0f));
+}
+
+// Adds what the static cache builds from `body` (static, enabled) to `signature`. Returns false for a body
+// whose pose is not Sane: it is left out of the cache, and only its address is added, so that becoming sane
+// again rebuilds the cache.
+bool AddStaticBody(Signature& signature, const b2Body& body)
 {
     signature.Add(&body);
+    if (!IsSane(body))
+    {
+        return false;
+    }
     signature.Add(body.GetPosition());
     signature.Add(body.GetAngle());
     for (const b2Fixture* fixture = body.GetFixtureList(); fixture != nullptr; fixture = fixture->GetNext())
@@ -135,6 +181,7 @@ void AddStaticBody(Signature& signature, const b2Body& body)
         signature.Add(fixture->GetRestitutionThreshold());
         signature.Add(*fixture->GetShape());
     }
+    return true;
 }
 
 constexpr std::uint32_t kRecent = 8;
@@ -162,15 +209,6 @@ b2AABB Grown(const b2AABB& box, float by)
     grown.lowerBound = box.lowerBound - b2Vec2(by, by);
     grown.upperBound = box.upperBound + b2Vec2(by, by);
     return grown;
-}
-
-// Whether a body's state is one to simulate with (see kMaxCoordinate): its position, rotation, centre and
-// velocities.
-bool IsSane(const b2Body& body)
-{
-    const b2Transform& xf = body.GetTransform();
-    return Sane(xf.p) & Sane(b2Vec2(xf.q.c, xf.q.s)) & Sane(body.GetWorldCenter()) &
-           Sane(body.GetLinearVelocity()) & Sane(b2Vec2(body.GetAngularVelocity(), 0.0f));
 }
 
 bool HasSolidFixture(const b2Body& body)
@@ -238,7 +276,7 @@ constexpr double kPieceLength = 256.0;
 constexpr double kMaxPieces = 64.0;
 } // namespace
 
-void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
+void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt, StaticWatch watch)
 {
     Signature signature;
     m_movingMaterials.clear();
@@ -251,18 +289,17 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
         {
             continue;
         }
-        if (!IsSane(*body))
+        if (body->GetType() == b2_staticBody)
         {
-            ++m_skippedBodies; // and left out of the static cache or this step's moving shapes
-            if (body->GetType() == b2_staticBody)
+            if (watch == StaticWatch::everyStep)
             {
-                signature.Add(body); // so that becoming sane again rebuilds the cache
+                m_skippedBodies += AddStaticBody(signature, *body) ? 0 : 1;
             }
             continue;
         }
-        if (body->GetType() == b2_staticBody)
+        if (!IsSane(*body))
         {
-            AddStaticBody(signature, *body);
+            ++m_skippedBodies; // and left out of this step's moving shapes
             continue;
         }
         if (ignore != nullptr && ignore->Ignore(body))
@@ -316,14 +353,40 @@ void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt)
             }
         }
     }
-    if (signature.Value() != m_signature)
-    {
-        BuildStatic(world);
-        m_signature = signature.Value();
-    }
+    BuildStaticIfStale(world, watch, signature.Value());
     // Moving bodies spread out, pile up and fall out of the world: an item budget keeps the grid's
     // memory a function of their number alone, so a step allocates only when there are more than ever.
     m_movingGrid.Build(m_movingBoxes, Grid::Listing::overlapped, kMovingItemsPerBox);
+}
+
+void WorldGeometry::BuildStaticIfStale(b2World& world, StaticWatch watch, std::uint64_t signature)
+{
+    // Watched: the signature of what the cache is built from. Not watched: built once, and again only after
+    // Invalidate.
+    const std::uint64_t now = watch == StaticWatch::everyStep ? signature : kBuiltUnwatched;
+    if (now != m_signature)
+    {
+        BuildStatic(world);
+        m_signature = now;
+    }
+}
+
+bool WorldGeometry::UpdateStatic(b2World& world, StaticWatch watch)
+{
+    Signature signature;
+    if (watch == StaticWatch::everyStep)
+    {
+        for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+        {
+            if (body->IsEnabled() && body->GetType() == b2_staticBody)
+            {
+                AddStaticBody(signature, *body); // the words Scan adds, in the same order
+            }
+        }
+    }
+    const std::uint64_t builds = m_builds;
+    BuildStaticIfStale(world, watch, signature.Value());
+    return m_builds != builds;
 }
 
 b2AABB WorldGeometry::SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach)
@@ -482,7 +545,7 @@ void WorldGeometry::DropDuplicatePrimitives()
                 hash.Add(m_polygonVertices[i]);
             }
         }
-        return hash.Value();
+        return Scramble(hash.Value());
     };
     auto same = [&](const Primitive& x, const Primitive& y)
     {
@@ -508,6 +571,7 @@ void WorldGeometry::DropDuplicatePrimitives()
         tableSize *= 2;
     }
     m_dedupTable.assign(tableSize, 0);
+    m_dedupProbes = 0;
     m_dedupHashes.resize(m_primitives.size());
     const std::size_t mask = tableSize - 1;
     std::uint32_t kept = 0;
@@ -519,6 +583,7 @@ void WorldGeometry::DropDuplicatePrimitives()
         bool duplicate = false;
         for (; m_dedupTable[at] != 0; at = (at + 1) & mask)
         {
+            ++m_dedupProbes;
             const std::uint32_t other = m_dedupTable[at] - 1;
             if (m_dedupHashes[other] == hash && same(m_primitives[other], primitive))
             {

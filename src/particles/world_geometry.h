@@ -2,13 +2,13 @@
 //
 // Static geometry is copied once into flat world-space primitives (segments, circles, convex polygons)
 // listed in a uniform grid (each in its neighbourhood, see grid.h), and copied again only when it changes.
-// Box2D 2.4 tells nobody when a fixture is created, so every step walks the world's body list once and folds
-// what defines the static geometry (each enabled static body's address and transform; each solid fixture's
-// address, shape type, filter, friction, restitution and threshold; each child's broad-phase box) into a
-// 64-bit signature; a different signature rebuilds the cache. This catches created, destroyed, moved,
-// enabled, disabled and re-filtered static fixtures, including a new fixture at a freed fixture's address
-// (its box differs). Editing a shape's vertices in place is not caught (Box2D's broad phase would not see it
-// either): call Invalidate() after doing that.
+// Box2D 2.4 tells nobody when a fixture is created, so by default (StaticWatch::everyStep) every step walks
+// the world's body list once and folds what defines the static geometry (each enabled static body's
+// address and pose; each fixture's address, type, sensor flag, filter, friction, restitution and threshold,
+// and its shape's own geometry) into a 64-bit signature; a different signature rebuilds the cache. This
+// catches created, destroyed, moved, enabled, disabled, re-filtered and edited static fixtures, including a
+// new fixture at a freed fixture's address. With StaticWatch::onRequest the walk passes static bodies over,
+// and the cache is rebuilt only after Invalidate().
 //
 // Moving geometry (dynamic and kinematic bodies, awake or asleep) is gathered during the same walk into
 // a per-step list and its own grid, keyed by the box each child swept during the step (tighter than
@@ -131,13 +131,23 @@ inline float MovingSlop(const b2AABB& box)
                                std::max(std::abs(box.upperBound.x), std::abs(box.upperBound.y))));
 }
 
+/// When the static cache looks for changes (ParticleSystemOptions::watchStaticGeometry).
+enum class StaticWatch : std::uint8_t
+{
+    everyStep, ///< every Scan hashes every static fixture and rebuilds on any change
+    onRequest, ///< built once; again only after Invalidate (the application says when it changed)
+};
+
 class WorldGeometry
 {
 public:
-    /// Walks the world once: rebuilds the static cache if its signature changed, gathers moving
+    /// Walks the world once: rebuilds the static cache if it is stale (see StaticWatch), gathers moving
     /// shapes. Bodies `ignore` ignores (body-backed particles) are skipped. `dt` (s) reconstructs where
-    /// moving bodies were at the start of the step.
-    void Scan(b2World& world, const BodyFilter* ignore, float dt);
+    /// moving bodies were at the start of the step. With StaticWatch::onRequest, static bodies are passed
+    /// over (their fixtures are not visited).
+    void Scan(b2World& world, const BodyFilter* ignore, float dt, StaticWatch watch = StaticWatch::everyStep);
+    /// Builds the static cache now if it is stale, as Scan would; returns whether it built.
+    bool UpdateStatic(b2World& world, StaticWatch watch);
     /// Forces a static rebuild at the next Scan.
     void Invalidate() { m_signature = 0; }
 
@@ -196,6 +206,9 @@ public:
     std::uint64_t SkippedBodies() const { return m_skippedBodies; }
     /// Times the static cache was built (for tests).
     std::uint64_t StaticBuilds() const { return m_builds; }
+    /// Slots the last build's duplicate search looked at beyond the first of each primitive (for tests: a
+    /// hash that spreads the primitives keeps it near zero).
+    std::uint64_t DedupProbes() const { return m_dedupProbes; }
     std::size_t StaticPrimitives() const { return m_primitives.size(); }
     /// The static grid's cell size (m): the primitives' median extent, or finer for few long ones.
     float StaticCellSize() const { return m_staticGrid.CellSize(); }
@@ -265,6 +278,10 @@ private:
     /// The box the child covers during the step (see the file comment), grown by a little for rounding.
     static b2AABB SweptBox(const MovingBody& body, const b2Shape& shape, int child, float reach);
     void BuildStatic(b2World& world);
+    /// Builds when `signature` (of the static bodies, when watched) says the cache is stale.
+    void BuildStaticIfStale(b2World& world, StaticWatch watch, std::uint64_t signature);
+    /// m_signature of a cache built without watching (any value but 0).
+    static constexpr std::uint64_t kBuiltUnwatched = 1;
     /// Keeps one of each set of identical primitives (same shape, filter and material: a fixture
     /// duplicated by the application or an editor), so that their number does not multiply every sweep.
     void DropDuplicatePrimitives();
@@ -274,6 +291,7 @@ private:
 
     std::uint64_t m_signature = 0;
     std::uint64_t m_builds = 0;
+    std::uint64_t m_dedupProbes = 0;
     std::uint64_t m_skippedBodies = 0;
     std::vector<SurfaceMaterial> m_materials;       ///< of static fixtures
     std::vector<SurfaceMaterial> m_movingMaterials; ///< of this step's moving fixtures

@@ -1,4 +1,5 @@
 #include "particles/particle_pool_fixture.h"
+#include "test_world.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -191,6 +192,43 @@ TEST(Particles, ColourAndSizeOverLife)
     EXPECT_FLOAT_EQ(middle.color.b, 0.5f);
     EXPECT_FLOAT_EQ(middle.color.a, 0.5f);
     EXPECT_FLOAT_EQ(middle.size, 0.3f);
+}
+
+// Effects passes the static cache's controls through: built at load, counted in the stats, and (not watched)
+// rebuilt when the application says the static geometry changed.
+TEST(Particles, EffectsBuildsTheStaticCacheAtLoadAndRebuildsItWhenTold)
+{
+    TestWorld scene;
+    scene.particles.watchStaticGeometry = false;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.Attach();
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    EXPECT_TRUE(fx.BuildStaticGeometry());
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 1u);
+    EXPECT_FALSE(fx.BuildStaticGeometry());
+    auto slide = [&](int steps)
+    {
+        for (int i = 0; i < steps; ++i)
+        {
+            box->SetLinearVelocity(b2Vec2(8.0f, box->GetLinearVelocity().y));
+            scene.Step();
+        }
+    };
+    slide(60);
+    EXPECT_GT(fx.Stats().live, 0u) << "sparks";
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 1u) << "the steps used the cache built at load";
+    b2BodyDef wallDef;
+    wallDef.position.Set(20.0f, 1.0f);
+    b2PolygonShape wall;
+    wall.SetAsBox(0.1f, 1.0f);
+    scene.world->CreateBody(&wallDef)->CreateFixture(&wall, 0.0f);
+    slide(10);
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 1u) << "not watched: the new wall is not seen";
+    fx.InvalidateStaticGeometry();
+    slide(1);
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 2u);
 }
 
 } // namespace cfx::test

@@ -289,6 +289,84 @@ TEST(ParticlePool, StaticCacheFollowsCreatedMovedAndDestroyedFixtures)
     EXPECT_LT(scene.Position(0).y, -2.0f);
 }
 
+// Built at load: BuildStaticGeometry builds the cache before any step, so the first step with a particle does
+// not; it builds again only when something changed (or was invalidated).
+TEST(ParticlePool, BuildStaticGeometryBuildsAtLoadAndOnlyWhenStale)
+{
+    Pool scene({Ball(0.0f)});
+    b2Body* ground = scene.CreateGround();
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 0u);
+    EXPECT_TRUE(scene.system->BuildStaticGeometry());
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 1u);
+    EXPECT_FALSE(scene.system->BuildStaticGeometry()) << "nothing changed";
+    scene.Add(b2Vec2(0.0f, 0.5f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 1e-3f);
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 1u) << "the steps used the cache built at load";
+    ground->SetTransform(b2Vec2(0.0f, -1.0f), 0.0f);
+    EXPECT_TRUE(scene.system->BuildStaticGeometry()) << "the ground moved";
+    scene.system->InvalidateStaticGeometry();
+    EXPECT_TRUE(scene.system->BuildStaticGeometry()) << "invalidated";
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 3u);
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, -0.95f, 1e-3f) << "fell onto the moved ground";
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 3u);
+}
+
+// watchStaticGeometry false: the steps do not look at static fixtures; the cache stays as built until the
+// application invalidates it, then follows the change.
+TEST(ParticlePool, AnUnwatchedStaticCacheChangesOnlyWhenInvalidated)
+{
+    ParticleSystemOptions options;
+    options.watchStaticGeometry = false;
+    Pool scene({Ball(0.0f)}, {64, RecyclePolicy::oldest}, options);
+    b2Body* ground = scene.CreateGround();
+    b2BodyDef shelfDef;
+    shelfDef.position.Set(0.0f, 1.0f);
+    b2Body* shelf = scene.world->CreateBody(&shelfDef);
+    b2PolygonShape box;
+    box.SetAsBox(1.0f, 0.1f);
+    shelf->CreateFixture(&box, 0.0f);
+    scene.Add(b2Vec2(0.0f, 2.0f));
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 1.15f, 1e-3f) << "on the shelf";
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 1u);
+    // Moved away, disabled, and a new fixture: not seen until the application says so.
+    shelf->SetTransform(b2Vec2(10.0f, 1.0f), 0.0f);
+    b2PolygonShape wall;
+    wall.SetAsBox(0.1f, 1.0f, b2Vec2(3.0f, 1.0f), 0.0f);
+    ground->CreateFixture(&wall, 0.0f);
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 1.15f, 1e-3f) << "meets the shelf as it was";
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 1u);
+    scene.system->InvalidateStaticGeometry();
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_NEAR(scene.Position(0).y, 0.05f, 1e-3f) << "the shelf has gone: it fell to the ground";
+    EXPECT_EQ(scene.system->StaticGeometryBuilds(), 2u);
+    // The new wall is in the rebuilt cache: a particle thrown at it stops before it.
+    scene.Add(b2Vec2(1.0f, 0.5f), b2Vec2(20.0f, 0.0f));
+    for (int i = 0; i < 30; ++i)
+    {
+        scene.StepAll();
+    }
+    EXPECT_LT(scene.Position(1).x, 2.9f - 0.05f + 1e-3f);
+}
+
 // A static slab created over particles resting on the ground (a door closing on them), and a particle
 // spawned in a slit narrower than itself between two static boxes: pushed out of one shape they are in
 // the other, so they have no free place and are crushed. A user's trial found them left inside for good,

@@ -820,6 +820,31 @@ TEST(WorldGeometry, AFarFixtureToTheLowerLeftLeavesTheSweepsNearTheOriginExact)
     EXPECT_EQ(uncrossed, 0) << "paths across it";
 }
 
+// A tile map: 20,000 boxes of 0.5 m in one row at round coordinates. The duplicate search's hash spreads
+// them over its table (a trial found every tile of a row probing the same slots: a 100,000-tile level took
+// 3 to 4.6 s to build, 85 % of it in that search).
+TEST(WorldGeometry, ARowOfTilesIsBuiltWithoutCrowdingTheDuplicateSearch)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    b2BodyDef def;
+    b2Body* ground = world.CreateBody(&def);
+    constexpr int kTiles = 20000;
+    for (int i = 0; i < kTiles; ++i)
+    {
+        b2PolygonShape tile;
+        tile.SetAsBox(0.25f, 0.25f, b2Vec2(-5000.0f + 0.5f * static_cast<float>(i), -0.25f), 0.0f);
+        ground->CreateFixture(&tile, 0.0f);
+    }
+    b2PolygonShape again; // one tile twice: still met once
+    again.SetAsBox(0.25f, 0.25f, b2Vec2(-5000.0f, -0.25f), 0.0f);
+    ground->CreateFixture(&again, 0.0f);
+    WorldGeometry geometry;
+    geometry.Scan(world, nullptr, 1.0f / 60.0f);
+    EXPECT_EQ(geometry.StaticPrimitives(), static_cast<std::size_t>(kTiles));
+    // Linear probing in a table at most half full: under one extra slot a primitive on average.
+    EXPECT_LT(geometry.DedupProbes(), static_cast<std::uint64_t>(kTiles));
+}
+
 TEST(WorldGeometry, StaticCacheSeesAChangeInAnyChildOfAChain)
 {
     b2World world(b2Vec2(0.0f, -10.0f));
