@@ -67,7 +67,8 @@ struct SoundVoice
     /// impact's peak times ImpactEnvelope of its age.
     float loudness = 0.0f;
     /// Impacts: the loudness at the start, the loudest of the events merged into it. Particle hits: that of
-    /// all the hits merged into it so far (their number and mean speed). Scrapes: the loudest so far.
+    /// all the hits merged into it (their number and mean speed), which wait for their merge time before it
+    /// starts, so it never changes. Scrapes: the loudest so far.
     float peak = 0.0f;
     float slipSpeed = 0.0f; ///< m/s, scrapes: tangential speed of the scrape's last event
     /// m/s, impacts: the fastest merged impact's approach speed; particle hits: the fastest mean speed
@@ -177,12 +178,14 @@ private:
         std::int64_t newestBucket = -1;
         float pending = 0.0f; ///< impacts, particle hits: loudness of one waiting to start a voice; 0: none
         std::uint32_t pendingId = 0;
-        /// Particle hits: the hits merged into the pending or sounding voice so far, their approach speeds
-        /// summed (m/s), and the time its steps took in (s, their dt summed): its loudness is that of all
-        /// of them, however many steps they came in.
+        float pendingSpeed = 0.0f;       ///< m/s: the approach speed the waiting voice starts with
+        b2Vec2 pendingPoint{0.0f, 0.0f}; ///< where the waiting voice's events were last reported
+        /// Particle hits: the hits waiting to start a voice, their approach speeds summed (m/s), and when the
+        /// step of the first of them began (s): they wait for their merge time to be over, and the voice
+        /// starts with the loudness of all of them, however many steps they came in.
         float mergedHits = 0.0f;
         float mergedSpeedSum = 0.0f;
-        double mergedTime = 0.0;
+        double mergeStart = 0.0;
         double lastStart = -1.0e300; ///< time of the pair's last voice start
         double releaseStart = 0.0;
         float releaseFrom = 0.0f;
@@ -200,7 +203,7 @@ private:
     Pair& FindOrAdd(VoiceKind kind, const EffectEvent& event);
     const SoundRuleDef& SoundOf(const Pair& pair) const;
     double MergeWindow(const Pair& pair) const;
-    bool Merges(const Pair& pair, float dt) const;
+    bool Merges(const Pair& pair) const;
     void Hit(Pair& pair, float loudness, const EffectEvent& event, bool merges);
     Pair* FindScrape(std::uint32_t scrapeId);
     void OnEvent(const EffectEvent& event, float dt);

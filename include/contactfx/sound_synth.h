@@ -11,7 +11,8 @@
 //
 // Timing: a voice started at time t is heard from sample round(t * 48000) on, rising to its loudness within
 // 3 ms; between two Render calls a voice's loudness moves linearly from its old to its new value; a voice no
-// longer listed fades out within the block and is silent after it. With no voice the output is exactly 0.
+// longer listed fades out within the block and is silent after it (an impact or particle hits voice sounds
+// to the block's end, fading over its last 3 ms: it stopped then). With no voice the output is exactly 0.
 //
 // Deterministic: every noise source is a seeded PCG32 of our own (seed and voice id), every sine and tangent
 // a polynomial of our own, so the same voices, times and seed give the same samples bit for bit.

@@ -135,6 +135,7 @@ void SoundSynth::Mix(Voice& voice, std::uint64_t first, std::size_t count, float
     const float attackSamples = kAttackSeconds * kSampleRate;
     const float lengthSamples = voice.rule->impactLength * kSampleRate;
     const float step = 1.0f / static_cast<float>(count);
+    const float fadeSamples = std::min(attackSamples, static_cast<float>(count));
     for (std::size_t i = 0; i < count; ++i)
     {
         const std::uint64_t sample = first + i;
@@ -149,8 +150,11 @@ void SoundSynth::Mix(Voice& voice, std::uint64_t first, std::size_t count, float
         float level = 0.0f;
         if (voice.kind != VoiceKind::scrape)
         {
-            // Listed: the rule's decay; dropped early (over the cap): that decay fading out in this block.
-            const float fade = toLoudness > 0.0f ? 1.0f : 1.0f - along;
+            // Listed: the rule's decay. No longer listed (it stopped at the end of this block: replaced by
+            // the next voice of its pair, or cut by the cap): that decay to the block's end, faded out over
+            // its last 3 ms only, so that how much of it is heard does not depend on the step rate.
+            const float fade =
+                toLoudness > 0.0f ? 1.0f : std::min(1.0f, static_cast<float>(count - 1 - i) / fadeSamples);
             level = voice.peak * ImpactEnvelope(age / lengthSamples) * fade;
             voice.phase += voice.pitch / kSampleRate;
             voice.phase -= std::floor(voice.phase);

@@ -254,23 +254,20 @@ double SoundVoices::MergeWindow(const Pair& pair) const
     return std::min(static_cast<double>(m_mergeWindow), static_cast<double>(SoundOf(pair).impactLength));
 }
 
-// Whether an impact or particle hits event of `pair` in a step of `dt` (s) merges into its voice: one waits
-// to start, or sounds and still takes events in: an impact voice for the merge window after its start (and
-// not its whole length), a particle hits voice while this step still fits, whole, in its merge time
-// (MergeWindow) with the steps it took in (a step's hits came over all of its dt; none is cut or lost).
-bool SoundVoices::Merges(const Pair& pair, float dt) const
+// Whether an impact or particle hits event of `pair` merges into its voice: one waits to start (particle
+// hits wait for their merge time, see Advance), or an impact voice sounds and is within the merge window
+// after its start (and not its whole length). Nothing merges into a sounding particle hits voice: its
+// loudness is known when it starts, as a one-shot needs it, and the loudest start of its decay is played
+// at it whatever the step rate.
+bool SoundVoices::Merges(const Pair& pair) const
 {
     if (pair.pending > 0.0f)
     {
         return true;
     }
-    if (pair.voice.id == 0)
+    if (pair.voice.id == 0 || pair.kind == VoiceKind::particleHits)
     {
         return false;
-    }
-    if (pair.kind == VoiceKind::particleHits)
-    {
-        return pair.mergedTime + static_cast<double>(dt) <= MergeWindow(pair) + kTimeSlop;
     }
     const double age = m_time - pair.voice.startTime;
     return age <= m_mergeWindow && age < static_cast<double>(SoundOf(pair).impactLength);
@@ -286,16 +283,16 @@ void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event, bool
     if (merges)
     {
         ++(impact ? m_stats.impactsMerged : m_stats.particleHitsMerged);
-        if (sounding)
+        if (sounding && pair.pending <= 0.0f) // an impact voice within its merge window
         {
             pair.voice.peak = std::max(pair.voice.peak, loudness);
             pair.voice.approachSpeed = std::max(pair.voice.approachSpeed, event.approachSpeed);
         }
-        else if (loudness > pair.pending)
+        else // into the one waiting to start (a sounding voice goes on meanwhile)
         {
-            pair.pending = loudness;
-            pair.voice.approachSpeed = event.approachSpeed;
-            pair.voice.point = event.point;
+            pair.pending = std::max(pair.pending, loudness);
+            pair.pendingSpeed = std::max(pair.pendingSpeed, event.approachSpeed);
+            pair.pendingPoint = event.point;
         }
     }
     else if (m_time - pair.lastStart < SoundOf(pair).cooldown)
@@ -307,8 +304,8 @@ void SoundVoices::Hit(Pair& pair, float loudness, const EffectEvent& event, bool
         pair.pending = loudness;
         // Particle hits have no id: they rank after impacts and scrapes among equals, in event order.
         pair.pendingId = impact ? event.id : m_hitsThisStep;
-        pair.voice.approachSpeed = event.approachSpeed;
-        pair.voice.point = event.point;
+        pair.pendingSpeed = event.approachSpeed;
+        pair.pendingPoint = event.point;
     }
 }
 
@@ -330,16 +327,15 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
     {
         if (event.particleType.index < m_hitSounds.size() && event.body != nullptr && event.count > 0)
         {
-            // The hits merging into one voice count together, whatever steps they came in: a rain of hits
-            // sounds about as loud at any step rate (more steps, fewer hits a step). An event in the step
-            // that made the voice wait to start adds no time.
+            // The hits of one merge time count together, whatever steps they came in, and start one voice
+            // when it is over (Advance): a rain of hits sounds alike at any step rate (more steps, fewer
+            // hits a step).
             Pair& pair = FindOrAdd(VoiceKind::particleHits, event);
-            const bool merges = Merges(pair, dt);
+            const bool merges = Merges(pair);
             const float hits = static_cast<float>(event.count);
             pair.mergedHits = (merges ? pair.mergedHits : 0.0f) + hits;
             pair.mergedSpeedSum = (merges ? pair.mergedSpeedSum : 0.0f) + event.approachSpeed * hits;
-            pair.mergedTime = (merges ? pair.mergedTime : 0.0) +
-                              (merges && pair.pending > 0.0f ? 0.0 : static_cast<double>(dt));
+            pair.mergeStart = merges ? pair.mergeStart : m_stepStart;
             Hit(pair,
                 ParticleHitLoudness(m_hitSounds[event.particleType.index], pair.mergedSpeedSum,
                                     pair.mergedHits),
@@ -378,7 +374,7 @@ void SoundVoices::OnEvent(const EffectEvent& event, float dt)
     case EffectEventType::impact:
     {
         Pair& pair = FindOrAdd(VoiceKind::impact, event);
-        Hit(pair, ImpactLoudness(rule, event), event, Merges(pair, dt));
+        Hit(pair, ImpactLoudness(rule, event), event, Merges(pair));
         break;
     }
     case EffectEventType::particleHits:
@@ -394,17 +390,23 @@ void SoundVoices::Advance(Pair& pair)
     SoundVoice& voice = pair.voice;
     if (pair.kind != VoiceKind::scrape)
     {
+        // Particle hits wait until a next step as long as this one would no longer fit in their merge time
+        // (from the start of the step of the first of them, steps without hits included): the whole steps
+        // that fit make one voice.
+        const bool ready = pair.pending > 0.0f && (pair.kind != VoiceKind::particleHits ||
+                                                   (m_time - pair.mergeStart) + (m_time - m_stepStart) >
+                                                       MergeWindow(pair) + kTimeSlop);
         if (voice.id != 0)
         {
             const auto age = static_cast<float>(m_time - voice.startTime);
             voice.loudness = voice.peak * ImpactEnvelope(age / rule.impactLength);
             // Decayed, or a new hit after the merge window and the cooldown replaces it.
-            if (voice.loudness <= 0.0f || pair.pending > 0.0f)
+            if (voice.loudness <= 0.0f || ready)
             {
                 Stop(pair);
             }
         }
-        if (pair.pending > 0.0f)
+        if (ready)
         {
             const std::uint64_t after = pair.kind == VoiceKind::impact ? 1ull << 32 : 2ull << 32;
             m_claims.push_back({index, false, pair.pending, after + pair.pendingId});
@@ -476,6 +478,11 @@ void SoundVoices::Start(Pair& pair, float loudness)
     voice.peak = loudness;
     voice.startTime = m_time;
     voice.releasing = false;
+    if (pair.kind != VoiceKind::scrape)
+    {
+        voice.approachSpeed = pair.pendingSpeed;
+        voice.point = pair.pendingPoint;
+    }
     pair.lastStart = m_time;
     pair.pending = 0.0f;
     ++(pair.kind == VoiceKind::scrape   ? m_stats.scrapeVoices

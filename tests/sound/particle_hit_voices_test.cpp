@@ -1,6 +1,7 @@
 // Particle hits -> voices (contactfx/sound.h): short ticks and taps per particle type and body, loudness from
 // the number of hits and their mean speed, merged within the impact window, capped with the other voices;
 // then the demo, whose dirt and sparks make them.
+#include "contactfx/sound_synth.h"
 #include "harness/scenes.h"
 #include "harness/simulation.h"
 #include "sound/sound_test_support.h"
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <initializer_list>
+#include <map>
 #include <vector>
 
 namespace cfx::test
@@ -36,6 +38,18 @@ EffectEvent Hits(const EventBench& bench, int box, std::uint16_t type, std::uint
 std::uint16_t TypeNamed(const EffectsConfig& config, const char* name)
 {
     return config.FindParticleType(name).index;
+}
+
+// Particle hits wait for their merge time before their voice starts: steps of `dt` with no event until
+// `voices` has one (at most 100). Returns how many steps that took.
+int StepUntilAVoice(SoundVoices& voices, float dt)
+{
+    int steps = 0;
+    for (; voices.Voices().empty() && steps < 100; ++steps)
+    {
+        voices.Step({}, dt);
+    }
+    return steps;
 }
 
 // The loudest a rain of 480 hits a second at 2 m/s on one body gets over 1 s, stepped at `dts` in turn.
@@ -70,6 +84,9 @@ TEST(ParticleHitVoices, LoudnessFollowsCountAndMeanSpeedAndTheVoiceDecaysOverIts
     const SoundConfig& sound = bench.config.sound;
     const EffectEvent hits = Hits(bench, 0, dirt, 9, 2.5f);
     voices.Step(std::span(&hits, 1), kDt);
+    EXPECT_TRUE(voices.Voices().empty()) << "the hits wait for their merge time";
+    // 40 ms: the step of the hits and the next fit, a third would not; the voice starts after them.
+    EXPECT_EQ(StepUntilAVoice(voices, kDt), 1);
     ASSERT_EQ(voices.Voices().size(), 1u);
     const SoundVoice& voice = voices.Voices()[0];
     EXPECT_EQ(voice.kind, VoiceKind::particleHits);
@@ -116,15 +133,15 @@ TEST(ParticleHitVoices, AreOnePerTypeAndBodyAndMergeWithinTheWindow)
     const std::vector<EffectEvent> first{Hits(bench, 0, dirt, 4, 2.0f), Hits(bench, 1, dirt, 4, 2.0f),
                                          Hits(bench, 0, sparks, 2, 6.0f)};
     voices.Step(first, kDt);
-    ASSERT_EQ(voices.Voices().size(), 3u);
-    // Ids go loudest first: the sparks (2 hits at 6 m/s) before the dirt (4 at 2 m/s).
-    EXPECT_EQ(voices.Voices()[0].particleType, ParticleTypeId{sparks});
-    EXPECT_EQ(voices.VoiceSound(voices.Voices()[0]).timbre, SoundTimbre::hiss) << "sparks: a bright tick";
-    // The next step, within the merge window: the same three slots, no new voice.
+    EXPECT_TRUE(voices.Voices().empty()) << "waiting for the merge time";
+    // The next step, within the merge window: merged into the same three slots, which then start.
     voices.Step(first, kDt);
-    EXPECT_EQ(voices.Voices().size(), 3u);
+    ASSERT_EQ(voices.Voices().size(), 3u);
     EXPECT_EQ(voices.Stats().particleHitVoices, 3u);
     EXPECT_EQ(voices.Stats().particleHitsMerged, 3u);
+    // Ids go loudest first: the sparks (4 hits at 6 m/s) before the dirt (8 at 2 m/s).
+    EXPECT_EQ(voices.Voices()[0].particleType, ParticleTypeId{sparks});
+    EXPECT_EQ(voices.VoiceSound(voices.Voices()[0]).timbre, SoundTimbre::hiss) << "sparks: a bright tick";
     // After the window, dirt on box 0 again: a new tap (no cooldown).
     const int windowSteps = static_cast<int>(std::ceil(bench.config.sound.impactMergeWindow / kDt));
     for (int step = 0; step < windowSteps; ++step)
@@ -132,14 +149,15 @@ TEST(ParticleHitVoices, AreOnePerTypeAndBodyAndMergeWithinTheWindow)
         voices.Step({}, kDt);
     }
     voices.Step(std::span(&first[0], 1), kDt);
+    voices.Step({}, kDt);
     EXPECT_EQ(voices.Stats().particleHitVoices, 4u);
 }
 
 // A trial's rain of dirt at about 500 hits a second summed to a third less loudness at 240 Hz than at 30 Hz:
 // the loudness counted one step's hits, and a step at 240 Hz has an eighth of them. A voice now counts all
 // the whole steps that fit in its merge time (40 ms: particleHitLength), so the rain peaks alike at every
-// rate, within the part of a step that does not fit (16 hits at 30, 60 and 120 Hz, 18 at 240 Hz), and so it
-// does when the step time changes from step to step; a lone hit is the same at all rates.
+// rate, within the part of a step that does not fit (16 hits at 30, 60 and 120 Hz, 18 at 240 Hz), and within
+// one step more when the step time changes from step to step; a lone hit is the same at all rates.
 TEST(ParticleHitVoices, ARainSoundsAlikeAtEveryStepRateAndALoneHitTheSame)
 {
     EventBench bench(2);
@@ -155,6 +173,7 @@ TEST(ParticleHitVoices, ARainSoundsAlikeAtEveryStepRateAndALoneHitTheSame)
         SoundVoices lone(bench.config);
         const EffectEvent hit = Hits(bench, 0, dirt, 1, 2.0f);
         lone.Step(std::span(&hit, 1), dt);
+        StepUntilAVoice(lone, dt);
         ASSERT_EQ(lone.Voices().size(), 1u);
         EXPECT_FLOAT_EQ(lone.Voices()[0].peak, loudness(1.0f));
     }
@@ -165,17 +184,21 @@ TEST(ParticleHitVoices, ARainSoundsAlikeAtEveryStepRateAndALoneHitTheSame)
     EXPECT_FLOAT_EQ(peaks[2], loudness(16.0f));
     EXPECT_FLOAT_EQ(peaks[3], loudness(18.0f));
     // Steps of 1/30 and 1/120 s in turn (the trial: a 1/30 s step weighted by a fifth, 0.1487), and of 4 to
-    // 40 ms.
-    EXPECT_FLOAT_EQ(RainPeak(bench, dirt, {1.0f / 30.0f, 1.0f / 120.0f}), loudness(16.0f));
+    // 40 ms. A voice starts when one more step as long as the last would no longer fit, so when the next is
+    // longer it takes that one in too: at most the merge time and one step (1/120 + 1/30 s: 20 hits; 13 + 9
+    // + 31 ms: 25).
+    const float alternating = RainPeak(bench, dirt, {1.0f / 30.0f, 1.0f / 120.0f});
+    EXPECT_GE(alternating, loudness(16.0f));
+    EXPECT_LE(alternating, loudness(20.0f) * (1.0f + 1e-6f));
     const float uneven = RainPeak(bench, dirt, {0.004f, 0.021f, 0.04f, 0.013f, 0.009f, 0.031f});
     EXPECT_GE(uneven, loudness(16.0f));
-    EXPECT_LE(uneven, loudness(20.0f));
+    EXPECT_LE(uneven, loudness(25.0f) * (1.0f + 1e-6f));
 }
 
 // A burst of hits late in a voice's merge time: before, a step that reached past it counted for the part
 // within it, and the burst in the step where that part was 0 raised nothing and started nothing (40 Hz, a
 // merge window of 50 ms and taps of 100 ms: the voice stayed at 0.030 where the burst alone sounds 0.95).
-// Now a step merges only whole: the burst is merged in full or starts its own voice.
+// Now a step merges only whole: the burst is merged in full or starts its own voice, within its merge time.
 TEST(ParticleHitVoices, ABurstLateInTheMergeTimeIsNeverLost)
 {
     EventBench bench(2);
@@ -198,8 +221,80 @@ TEST(ParticleHitVoices, ABurstLateInTheMergeTimeIsNeverLost)
             }
             const EffectEvent burst = Hits(bench, 0, dirt, 100, 10.0f);
             voices.Step(std::span(&burst, 1), dt);
-            ASSERT_EQ(voices.Voices().size(), 1u);
-            EXPECT_GE(voices.Voices()[0].peak, 0.99f * alone);
+            // Merged into the waiting voice, or waiting for a voice of its own: either sounds it in full
+            // within its merge time.
+            float loudest = 0.0f;
+            for (int step = 0; step <= hz / 20 + 1; ++step)
+            {
+                ASSERT_LE(voices.Voices().size(), 1u);
+                loudest = std::max(loudest, voices.Voices().empty() ? 0.0f : voices.Voices()[0].peak);
+                voices.Step({}, dt);
+            }
+            EXPECT_GE(loudest, 0.99f * alone);
+        }
+    }
+}
+
+// A trial's rain of 480 dirt hits a second at 2 m/s gave voices of the same final peak at 30, 60 and 120 Hz,
+// yet its synthesized RMS was 392, 491, 394 and 315 at 30, 60, 120 and 240 Hz: a voice started with its
+// first step's hits and grew as later steps merged into it (so the loudest start of its decay was played at
+// an eighth of the hits at 240 Hz), and the synthesizer faded a replaced voice over its whole last step (at
+// 30 Hz all of it). Hits now wait for their merge time and start their voice with all of them, and a
+// replaced voice sounds to its step's end. Also with hits in only some steps (merge time is elapsed time).
+TEST(ParticleHitVoices, ARainsTapsSoundAlikeAtEveryStepRate)
+{
+    EventBench bench(2);
+    const std::uint16_t dirt = TypeNamed(bench.config, "dirt");
+    for (const int gaps : {0, 3})
+    {
+        std::vector<double> rms;
+        for (const int hz : {30, 60, 120, 240})
+        {
+            SCOPED_TRACE(testing::Message() << hz << " Hz, gaps " << gaps);
+            SoundVoices voices(bench.config);
+            SoundSynth synth(bench.config);
+            std::vector<std::int16_t> samples;
+            std::map<std::uint32_t, float> startPeak;
+            const float dt = 1.0f / static_cast<float>(hz);
+            double owed = 0.0;
+            double time = 0.0;
+            for (int step = 0; step < 2 * hz; ++step)
+            {
+                owed += 480.0 * dt;
+                std::vector<EffectEvent> events;
+                if ((gaps == 0 || hz < 120 || step % gaps != 0) &&
+                    owed >= 1.0) // hz >= 120: a third of steps none
+                {
+                    events.push_back(Hits(bench, 0, dirt, static_cast<std::uint32_t>(owed), 2.0f));
+                    owed -= static_cast<std::uint32_t>(owed);
+                }
+                voices.Step(events, dt);
+                time += dt;
+                for (const VoiceChange& change : voices.Changes()) // as loud at its stop as at its start
+                {
+                    if (change.type == VoiceChangeType::started)
+                    {
+                        startPeak[change.voice.id] = change.voice.peak;
+                    }
+                    else
+                    {
+                        EXPECT_EQ(change.voice.peak, startPeak.at(change.voice.id));
+                    }
+                }
+                synth.Render(voices.Voices(), time, samples);
+            }
+            double sum = 0.0;
+            for (std::size_t i = samples.size() / 4; i < samples.size(); ++i)
+            {
+                sum += static_cast<double>(samples[i]) * samples[i];
+            }
+            rms.push_back(std::sqrt(sum / static_cast<double>(samples.size() - samples.size() / 4)));
+        }
+        std::printf("a rain of 480 hits a second (gaps %d): RMS %.0f %.0f %.0f %.0f at 30, 60, 120, 240 Hz\n",
+                    gaps, rms[0], rms[1], rms[2], rms[3]);
+        for (std::size_t i = 1; i < rms.size(); ++i)
+        {
+            EXPECT_NEAR(rms[i] / rms[0], 1.0, 0.06) << "rate " << i;
         }
     }
 }
@@ -217,6 +312,7 @@ TEST(ParticleHitVoices, ShareTheCapWithTheOtherVoicesLoudestFirst)
     }
     events.push_back(bench.Impact(0, 1, 0.99f)); // louder than any tap
     voices.Step(events, kDt);
+    voices.Step({}, kDt); // the taps wait for their merge time, the impact sounds on
     const std::uint32_t cap = bench.config.sound.maxVoices;
     ASSERT_EQ(voices.Voices().size(), cap);
     int impacts = 0;
