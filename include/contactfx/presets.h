@@ -13,7 +13,9 @@ namespace cfx
 /// body standing there, which its particles pass through, as in the tutorial; beside a wheel or body they
 /// would collide with), Box2D bodies of radius 0.01 that stop bouncing below 1 m/s (Box2D 2.3's
 /// threshold), at most 100, oldest recycled. Life losses per step are expressed as lifetimes at the
-/// tutorial's 60 Hz. Fixtures without a `material` property get the tutorial's guesses as assignments:
+/// tutorial's 60 Hz. One particle per contact per step makes the emission follow the step rate (twice as
+/// many at 120 Hz as at 60), and with at most 100 the oldest are recycled sooner: the demo's smoke lives
+/// 1.62 s at 30 and 60 Hz, 0.83 s at 120 Hz and 0.42 s at 240 Hz (a trial), as the tutorial's would. Fixtures without a `material` property get the tutorial's guesses as assignments:
 /// steel on bodies heavier than 3 kg, concrete on static fixtures with friction > 0.5, dirt on static ones
 /// with friction < 0.5, rubber on other dynamic bodies heavier than 0.4 kg.
 /// Where it still differs from the tutorial's own code: a contact the application disabled in PreSolve
