@@ -24,11 +24,12 @@ void StatisticsPanel(const Session& session, const StepTimeWindow& times, float 
         ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
     if (ImGui::BeginTable("rules", 5, kTable))
     {
-        ImGui::TableSetupColumn("rule");
-        ImGui::TableSetupColumn("contacts");
-        ImGui::TableSetupColumn("made");
-        ImGui::TableSetupColumn("max intensity");
-        ImGui::TableSetupColumn("impacts");
+        // The numbers fit their headers; the rule's name takes the rest of the width.
+        ImGui::TableSetupColumn("rule", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("contacts", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("made", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("intensity", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("impacts", ImGuiTableColumnFlags_WidthFixed);
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < config.rules.size(); ++i)
         {
