@@ -419,7 +419,9 @@ const std::array kSoundFields{
               .unit = "s",
               .range = {0.0f, 10.0f},
               .doc = "impacts of one body pair within this time of its impact voice's start merge into "
-                     "that voice, which takes the loudest",
+                     "that voice, which takes the loudest; particle hits of one type and body gather this long "
+                     "(at most `particleHitLength`, the whole steps that fit) before their voice starts, so "
+                     "it is also their delay",
               .step = 0.005f},
     Field<SC>{.name = "trackedPairs",
               .member = &SC::trackedPairs,

@@ -212,8 +212,9 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     Json rules = Json::object();
     for (const auto& [name, index] : names)
     {
-        rules[name] =
-            Json{{"contacts_max", stats.rules[index].contactsMax}, {"spawned", stats.rules[index].spawned}};
+        rules[name] = Json{{"contacts_max", stats.rules[index].contactsMax},
+                           {"spawned", stats.rules[index].spawned},
+                           {"impacts", stats.rules[index].impacts}};
     }
     root["rules"] = rules;
     root["live_max"] = stats.liveMax;
@@ -228,6 +229,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     root["skipped_bodies"] = stats.skippedBodies;
     root["non_finite_samples"] = stats.nonFiniteSamples;
     root["stale_materials"] = stats.staleMaterials;
+    root["static_geometry_builds"] = stats.staticGeometryBuilds;
     if (runHash != nullptr)
     {
         root["state_hash"] = runHash->Hex();

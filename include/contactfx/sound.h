@@ -105,7 +105,10 @@ struct SoundStats
     std::uint64_t particleHitVoices = 0;  ///< particle hits voices started
     std::uint64_t particleHitsMerged = 0; ///< particle hits events merged into a voice of their type and body
     std::uint64_t particleHitsOverCap = 0; ///< particle hits events that never sounded: over maxVoices
-    std::uint32_t soundingMax = 0;         ///< most voices sounding at once
+    /// Particle hits voices still waiting for their merge time when StopAll came: they never sounded (at
+    /// most one per particle type and body, of hits in the last merge time before the stop).
+    std::uint64_t particleHitVoicesNotStarted = 0;
+    std::uint32_t soundingMax = 0; ///< most voices sounding at once
 };
 
 /// The sound rule of every pair rule of `config`, indexed by RuleId: the `sound.rules` entry naming its
@@ -138,7 +141,11 @@ public:
     /// InputError (file "<api>", field "dt") otherwise, and nothing changes.
     void Step(std::span<const EffectEvent> events, float dt);
 
-    /// Stops every sounding voice now (the end of a run); Changes() then lists the stops.
+    /// Stops every sounding voice now (the end of a run, a level change); Changes() then lists the stops.
+    /// Forgets every body pair too: the scrapes going on (a scrape that goes on after it starts a new
+    /// voice at its next event) and the particle hits still waiting for their merge time, which never
+    /// sound (SoundStats::particleHitVoicesNotStarted counts them). Enough at a level change: a new
+    /// Effects' events, whose ids start from 1 again, never meet the old level's.
     void StopAll();
 
     /// The voices sounding after the last Step, in start order. Valid until the next Step or StopAll.

@@ -599,12 +599,14 @@ void SoundVoices::StopAll()
     {
         m_changes.push_back({VoiceChangeType::stopped, m_time, voice});
     }
-    for (Pair& pair : m_pairs)
+    // Every pair is forgotten: the scrapes attached to them (a level's, whose scrapeEnded may never come: a
+    // new Effects counts its ids from 1 again) and the particle hits still waiting for their merge time.
+    for (const Pair& pair : m_pairs)
     {
-        pair.voice.id = 0;
-        pair.voice.loudness = 0.0f;
-        pair.pending = 0.0f;
+        m_stats.particleHitVoicesNotStarted +=
+            pair.kind == VoiceKind::particleHits && pair.pending > 0.0f ? 1 : 0;
     }
+    m_pairs.clear();
     m_voices.clear();
 }
 

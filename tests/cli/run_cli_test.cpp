@@ -51,6 +51,34 @@ TEST(CliRun, DemoPrintsASummaryAndWritesStats)
     }
     EXPECT_TRUE(stats.contains("live_max"));
     EXPECT_EQ(stats["spawned_inside_solid"], 0);
+    EXPECT_EQ(stats["static_geometry_builds"], 1) << "the tutorial's ground never changes";
+}
+
+// Each rule's "impacts" in the stats file counts its impact events, as the events file lists them.
+TEST(CliRun, StatsCountEachRulesImpactsAsTheEventsFileLists)
+{
+    std::filesystem::path dir = ScratchDir("impacts");
+    CliResult result = RunCli("demo --seconds 8 --stats " + (dir / "stats.json").string() + " --events " +
+                              (dir / "events.jsonl").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const nlohmann::json stats = nlohmann::json::parse(FileText(dir / "stats.json"));
+    std::map<std::string, std::uint64_t> listed;
+    std::istringstream lines(FileText(dir / "events.jsonl"));
+    for (std::string line; std::getline(lines, line);)
+    {
+        const nlohmann::json event = nlohmann::json::parse(line);
+        if (event["type"] == "impact")
+        {
+            ++listed[event["pair"].get<std::string>()];
+        }
+    }
+    std::uint64_t total = 0;
+    for (const auto& [rule, counts] : stats["rules"].items())
+    {
+        EXPECT_EQ(counts["impacts"].get<std::uint64_t>(), listed[rule]) << rule;
+        total += counts["impacts"].get<std::uint64_t>();
+    }
+    EXPECT_GT(total, 0u) << "the demo's tyres land on the concrete in its first 8 s";
 }
 
 TEST(CliRun, SameCommandTwiceWritesByteIdenticalStats)

@@ -92,6 +92,52 @@ TEST(SoundVoices, AFlickeringScrapeAboveTheContinueThresholdIsOneVoice)
     EXPECT_TRUE(quietVoices.Changes().empty());
 }
 
+// A trial kept one SoundVoices across level reloads (a new Effects each level, StopAll between): a scrape
+// the old level left open started a voice again at the new level's first step, at the old level's place,
+// and a new scrape with the same id (a new Effects counts from 1) joined the old level's bodies. StopAll
+// now forgets every pair; particle hits still waiting for their merge time are counted, never sounded.
+TEST(SoundVoices, StopAllForgetsTheScrapesAndHitsOfTheLevelItEnds)
+{
+    EventBench bench(2);
+    bench.config.sound.rules.back().scrapeWindow = SoundRuleDef{}.scrapeWindow; // the default window
+    SoundVoices voices(bench.config);
+    const float loud = 2.0f * kRule.scrapeStart;
+    voices.Step(std::vector{bench.Scrape(Type::scrapeBegan, 0, 1, loud)}, kDt);
+    for (int step = 0; step < 60; ++step) // past the cooldown
+    {
+        voices.Step(std::vector{bench.Scrape(Type::scrapeChanged, 0, 1, loud)}, kDt);
+    }
+    ASSERT_EQ(voices.Voices().size(), 1u);
+    EffectEvent hits;
+    hits.type = Type::particleHits;
+    hits.body = bench.boxes[1]->GetBody();
+    hits.particleType = bench.config.FindParticleType("dirt");
+    hits.count = 5;
+    hits.approachSpeed = 3.0f;
+    // The level's last step: still scraping, and hits that wait for their merge time.
+    voices.Step(std::vector{bench.Scrape(Type::scrapeChanged, 0, 1, loud), hits}, kDt);
+    voices.StopAll(); // the level ends without scrapeEnded
+    EXPECT_TRUE(voices.Voices().empty());
+    EXPECT_EQ(voices.Stats().particleHitVoicesNotStarted, 1u);
+    // The next level: a quiet step starts nothing.
+    for (int step = 0; step < 5; ++step)
+    {
+        voices.Step({}, kDt);
+        EXPECT_TRUE(voices.Changes().empty()) << "step " << step;
+    }
+    // Its scrape number 1, on box 1, starts a voice of its own.
+    EffectEvent next = bench.Scrape(Type::scrapeBegan, 1, 1, loud);
+    next.point = b2Vec2(7.0f, 0.0f);
+    for (int step = 0; step < 4; ++step) // the window fills
+    {
+        voices.Step(std::vector{next}, kDt);
+        next.type = Type::scrapeChanged;
+    }
+    ASSERT_EQ(voices.Voices().size(), 1u);
+    EXPECT_EQ(voices.Voices()[0].point.x, 7.0f);
+    EXPECT_EQ(voices.Stats().scrapeVoices, 2u);
+}
+
 TEST(SoundVoices, AOneStepScrapeSoundsItsMinimumDurationThenFadesOverItsRelease)
 {
     EventBench bench(1);
