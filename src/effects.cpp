@@ -76,6 +76,17 @@ private:
     const b2World* m_world;
 };
 
+// A static fixture that goes (destroyed, or about to be with ForgetFixture) changes the particles' static
+// geometry: said to the cache, so that even with ParticleSystemOptions::watchStaticGeometry false no
+// particle meets it, nor names its body in a hit, after the step it went in.
+void InvalidateIfStatic(ParticleSystem& particles, const b2Fixture& fixture)
+{
+    if (fixture.GetBody()->GetType() == b2_staticBody)
+    {
+        particles.InvalidateStaticGeometry();
+    }
+}
+
 // Forgets fixtures destroyed with their body, and the bodies of body-backed particles the application
 // destroyed (so the particle system never destroys them again), then forwards to the application's
 // listener.
@@ -106,6 +117,7 @@ public:
             forward->SayGoodbye(fixture); // before ForgetBody: to IsParticleBody it is still a particle's
         }
         m_particles.ForgetBody(fixture->GetBody()); // nothing unless it is a particle's body
+        InvalidateIfStatic(m_particles, *fixture);
     }
 
 private:
@@ -241,6 +253,7 @@ void Effects::ForgetFixture(b2Fixture* fixture)
     CheckMaterialArguments(fixture, "fixture", MaterialId{});
     m_internals->tracker.ForgetFixture(fixture);
     m_internals->materials.Erase(fixture);
+    InvalidateIfStatic(m_particles, *fixture);
 }
 
 void Effects::SetDestructionListener(b2DestructionListener* listener)

@@ -117,10 +117,12 @@ struct ParticleSystemOptions
     /// it hashes every fixture of every enabled static body, about 20 ns each (2 ms a step at 100,000
     /// fixtures), and rebuilds the cache on any change. false: the cache is built once (at the first step
     /// that needs it, or BuildStaticGeometry()) and again only after InvalidateStaticGeometry() or a
-    /// ShiftOrigin; static bodies then cost nothing per step. The application must then call
-    /// InvalidateStaticGeometry() after every change of a static fixture or body (created, destroyed,
-    /// moved, enabled, disabled, re-filtered, edited); until it does, pool particles meet the geometry as
-    /// it was.
+    /// ShiftOrigin; static bodies then cost nothing per step (nor are they counted in
+    /// ParticleCounters::skippedBodies). The application must then call InvalidateStaticGeometry() after
+    /// every change of a static fixture or body (created, destroyed, moved, enabled, disabled, re-filtered,
+    /// edited); until it does, pool particles meet the geometry as it was, and a hit on a destroyed fixture
+    /// names its freed body. Effects says so itself for static fixtures destroyed through its destruction
+    /// listener (b2World::DestroyBody) or after Effects::ForgetFixture.
     bool watchStaticGeometry = true;
 };
 

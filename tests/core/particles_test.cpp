@@ -223,12 +223,29 @@ TEST(Particles, EffectsBuildsTheStaticCacheAtLoadAndRebuildsItWhenTold)
     wallDef.position.Set(20.0f, 1.0f);
     b2PolygonShape wall;
     wall.SetAsBox(0.1f, 1.0f);
-    scene.world->CreateBody(&wallDef)->CreateFixture(&wall, 0.0f);
+    b2Body* wallBody = scene.world->CreateBody(&wallDef);
+    wallBody->CreateFixture(&wall, 0.0f);
     slide(10);
     EXPECT_EQ(fx.Stats().staticGeometryBuilds, 1u) << "not watched: the new wall is not seen";
     fx.InvalidateStaticGeometry();
     slide(1);
     EXPECT_EQ(fx.Stats().staticGeometryBuilds, 2u);
+    // What goes is said to the cache by the destruction listener, or by ForgetFixture before
+    // DestroyFixture: no particle meets a destroyed static fixture, or names its body in a hit (a re-check
+    // found hits naming a destroyed body, then a new body Box2D put at its address).
+    scene.world->DestroyBody(wallBody);
+    slide(1);
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 3u) << "a static body destroyed";
+    b2PolygonShape kerb;
+    kerb.SetAsBox(0.5f, 0.1f, b2Vec2(-20.0f, 0.1f), 0.0f);
+    b2Fixture* kerbFixture = ground->CreateFixture(&kerb, 0.0f);
+    fx.InvalidateStaticGeometry(); // created: the application says so
+    slide(1);
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 4u);
+    fx.ForgetFixture(kerbFixture);
+    ground->DestroyFixture(kerbFixture);
+    slide(1);
+    EXPECT_EQ(fx.Stats().staticGeometryBuilds, 5u) << "a static fixture destroyed after ForgetFixture";
 }
 
 } // namespace cfx::test
