@@ -108,6 +108,7 @@ constexpr Rgb kThreshold{1.00, 0.38, 0.38};
 constexpr Rgb kStrip{0.08, 0.09, 0.12};
 constexpr Rgb kSoftTouch{0.45, 0.47, 0.55}; // a new touch below impactThreshold
 constexpr Rgb kImpact{0.95, 0.95, 0.97};    // an impact event
+constexpr Rgb kBurst{1.00, 0.55, 0.10};     // an impact that burst particles (whatever their colour)
 
 void SetColor(cairo_t* cr, Rgb c, double alpha = 1.0)
 {
@@ -199,9 +200,26 @@ void VerticalText(cairo_t* cr, double x, double y, const std::string& text)
     cairo_restore(cr);
 }
 
-/// A dashed level line across `p` at `y`, labelled at its right end.
-void LevelLine(cairo_t* cr, const Panel& p, double y, Rgb color, const std::string& label)
+/// The top of an axis showing values up to `peak` and a level line at `level` (both >= 0): room for both,
+/// unless the level is far above everything seen (a huge threshold), which would flatten the curve: then
+/// the axis follows the values and the level is drawn at the top, marked as above it.
+double AxisTop(double peak, double level)
 {
+    if (peak > 0.0 && level > 6.0 * peak)
+    {
+        return 1.15 * peak;
+    }
+    return std::max({peak, 1.5 * level, 1e-3}) * 1.15;
+}
+
+/// A dashed level line across `p` at value `level` of an axis whose top is `top`, labelled on a dark
+/// `backing` (bars under it do not hide it), the label's right end `labelRight` px from the panel's right
+/// edge; a level above the top is drawn at the top and its label says so.
+void LevelLine(cairo_t* cr, const Panel& p, double level, double top, Rgb color, const std::string& label,
+               Rgb backing, double labelRight = 4.0)
+{
+    const bool above = level > top;
+    const double y = above ? p.y + 1.0 : p.y + p.height * (1.0 - level / top);
     const double dash[] = {6.0, 4.0};
     cairo_set_dash(cr, dash, 2, 0.0);
     SetColor(cr, color);
@@ -209,14 +227,25 @@ void LevelLine(cairo_t* cr, const Panel& p, double y, Rgb color, const std::stri
     cairo_line_to(cr, p.x + p.width, y);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
-    Text(cr, p.x + p.width - 4.0, y - 4.0, label, 1.0);
+    const std::string text = above ? label + " (above)" : label;
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, text.c_str(), &extents);
+    // Above the line, or below it when the line is too near the panel's top.
+    const double baseline = y - 4.0 - extents.height < p.y ? y + extents.height + 3.0 : y - 4.0;
+    const double x = p.x + p.width - labelRight - extents.x_advance;
+    SetColor(cr, backing, 0.85);
+    cairo_rectangle(cr, x - 2.0, baseline - extents.height - 1.0, extents.x_advance + 4.0,
+                    extents.height + 3.0);
+    cairo_fill(cr);
+    SetColor(cr, color);
+    Text(cr, x, baseline, text);
 }
 
 /// The strip under a rule's chart: each column's fastest new touch as a bar of its approach speed, grey
-/// below impactThreshold, white where it made an impact event, in the particle's colour where that impact
-/// burst; the thresholds as dashed lines.
+/// below impactThreshold, white where it made an impact event, amber where that impact burst particles;
+/// the thresholds as dashed lines.
 void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& columns, double seconds,
-                     const RuleDef& def, Rgb particleColor)
+                     const RuleDef& def)
 {
     const double burstFrom = std::max(def.impactThreshold, def.burstThreshold);
     const bool bursts = def.burstPerSpeed > 0.0f;
@@ -225,8 +254,7 @@ void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& col
     {
         peak = std::max(peak, column.approach);
     }
-    const double top =
-        std::max({static_cast<double>(peak), 1.5 * (bursts ? burstFrom : def.impactThreshold), 1e-3}) * 1.15;
+    const double top = AxisTop(peak, bursts ? burstFrom : def.impactThreshold);
     auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
     auto yAt = [&](double v) { return p.y + p.height * (1.0 - v / top); };
 
@@ -234,7 +262,7 @@ void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& col
     cairo_rectangle(cr, p.x, p.y, p.width, p.height);
     cairo_fill(cr);
     cairo_set_font_size(cr, 10.0);
-    const double step = NiceStep(top, 2);
+    const double step = NiceStep(top, 3); // at most 0.83 of the top: one tick above 0 at least
     SetColor(cr, kImpact);
     for (double v = 0.0; v <= top + 1e-9; v += step)
     {
@@ -244,24 +272,31 @@ void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& col
     VerticalText(cr, p.x - 52.0, p.y + 0.5 * p.height, "m/s");
     for (const Column& column : columns)
     {
-        if (column.approach <= 0.0f)
+        if (column.approach <= 0.0f && column.impacts == 0)
         {
             continue;
         }
         const bool burst = column.impacts > 0 && bursts && column.approach > burstFrom;
-        SetColor(cr, burst ? particleColor : column.impacts > 0 ? kImpact : kSoftTouch);
+        SetColor(cr, burst ? kBurst : column.impacts > 0 ? kImpact : kSoftTouch);
         const double x0 = xAt(column.start);
         const double x1 = std::max(xAt(column.start + column.duration) - 1.0, x0 + 1.0);
-        cairo_rectangle(cr, x0, yAt(column.approach), x1 - x0, yAt(0.0) - yAt(column.approach));
+        // At least 2 px tall: an impact at 0 m/s (impactThreshold 0) shows too.
+        const double y = std::min(yAt(std::min<double>(column.approach, top)), yAt(0.0) - 2.0);
+        cairo_rectangle(cr, x0, y, x1 - x0, yAt(0.0) - y);
         cairo_fill(cr);
     }
     cairo_set_line_width(cr, 1.0);
-    LevelLine(cr, p, yAt(def.impactThreshold), kThreshold, "impact " + Number(def.impactThreshold) + " m/s");
+    const std::string impact = "impact " + Number(def.impactThreshold) + " m/s";
     if (bursts && def.burstThreshold > def.impactThreshold)
     {
-        LevelLine(cr, p, yAt(def.burstThreshold), particleColor,
-                  "burst " + Number(def.burstThreshold) + " m/s");
+        // Drawn first, its label left of the impact line's (which may be just below it and is drawn over
+        // this line).
+        cairo_text_extents_t extents;
+        cairo_text_extents(cr, impact.c_str(), &extents);
+        LevelLine(cr, p, def.burstThreshold, top, kBurst, "burst " + Number(def.burstThreshold) + " m/s",
+                  kStrip, 4.0 + extents.x_advance + 10.0);
     }
+    LevelLine(cr, p, def.impactThreshold, top, kThreshold, impact, kStrip);
     SetColor(cr, kText);
     Text(cr, p.x + 8.0, p.y + 12.0, "new touches: approach speed");
 }
@@ -286,9 +321,8 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
         total += column.spawned;
         impacts += column.impacts;
     }
-    DrawImpactStrip(cr, Panel{p.x, p.y + p.height + 2.0, p.width, stripHeight}, columns, seconds, def,
-                    particleColor);
-    const double top = std::max({static_cast<double>(peak), 1.5 * def.threshold, 1e-3}) * 1.1;
+    DrawImpactStrip(cr, Panel{p.x, p.y + p.height + 2.0, p.width, stripHeight}, columns, seconds, def);
+    const double top = AxisTop(peak, def.threshold);
     const double rateTop = std::max(peakRate, 1.0) * 1.1;
     auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
     auto yAt = [&](double v) { return p.y + p.height * (1.0 - v / top); };
@@ -356,7 +390,7 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
 
     // The threshold.
     cairo_set_line_width(cr, 1.5);
-    LevelLine(cr, p, yAt(def.threshold), kThreshold, "threshold " + Number(def.threshold));
+    LevelLine(cr, p, def.threshold, top, kThreshold, "threshold " + Number(def.threshold), kPanel);
 
     // Label.
     cairo_set_font_size(cr, 13.0);
@@ -400,7 +434,7 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
     SetColor(cr, kText);
     Text(cr, kLeft + 330.0, 44.0, "filled: particles emitted per second (right axis); shaded: emitting;");
     Text(cr, kLeft + 330.0, 58.0,
-         "strip: fastest new touch (grey: below the impact threshold, white: impact, colour: burst)");
+         "strip: fastest new touch (grey: below the impact threshold, white: impact, amber: burst)");
 
     const double panelWidth = width - kLeft - kRight;
     for (std::size_t r = 0; r < rules; ++r)
