@@ -316,6 +316,12 @@ void Effects::Step(float dt)
     NotifyListener();
 }
 
+void Effects::ClearParticles()
+{
+    m_particles.Clear();
+    m_stats.live = 0;
+}
+
 bool Effects::BuildStaticGeometry()
 {
     const bool built = m_particles.BuildStaticGeometry();

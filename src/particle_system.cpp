@@ -763,6 +763,19 @@ void ParticleSystem::ShiftOrigin(b2Vec2 newOrigin)
     impl.geometry.Invalidate();
 }
 
+void ParticleSystem::Clear()
+{
+    Impl& impl = *m_impl;
+    m_count = impl.DropForgotten(m_count, m_capacity);
+    for (std::uint32_t i = 0; i < m_count; ++i)
+    {
+        impl.ReleaseBody(View().Slot(i));
+    }
+    m_count = 0;
+    impl.candidatesValid = false;
+    impl.hitGroups.clear();
+}
+
 void ParticleSystem::InvalidateStaticGeometry()
 {
     m_impl->geometry.Invalidate();

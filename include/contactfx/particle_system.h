@@ -182,6 +182,10 @@ public:
     /// zero (then nothing changes). Throws InputError (file "<api>", field "newOrigin") when it is not
     /// finite; nothing changes then.
     void ShiftOrigin(b2Vec2 newOrigin);
+    /// Removes every particle now (a level restarted in place), destroying the bodies of body-backed ones;
+    /// Hits() is empty until the next step. Counters and the static cache stay. Not from inside
+    /// b2World::Step (its listeners): Box2D cannot destroy bodies then.
+    void Clear();
     /// Rebuilds the static geometry cache at the next step (or BuildStaticGeometry). Needed only with
     /// ParticleSystemOptions::watchStaticGeometry false; otherwise every change of the static geometry, a
     /// shape edited in place too, is detected.
