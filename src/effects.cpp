@@ -316,10 +316,14 @@ void Effects::Step(float dt)
     NotifyListener();
 }
 
-void Effects::ClearParticles()
+bool Effects::ClearParticles()
 {
-    m_particles.Clear();
+    if (!m_particles.Clear())
+    {
+        return false;
+    }
     m_stats.live = 0;
+    return true;
 }
 
 bool Effects::BuildStaticGeometry()

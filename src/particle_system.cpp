@@ -763,9 +763,16 @@ void ParticleSystem::ShiftOrigin(b2Vec2 newOrigin)
     impl.geometry.Invalidate();
 }
 
-void ParticleSystem::Clear()
+bool ParticleSystem::Clear()
 {
     Impl& impl = *m_impl;
+    // Not inside b2World::Step (Box2D cannot destroy bodies then), nor from a destruction listener while this
+    // system destroys a particle's body (in its own step, or in a Clear: the body would go twice). No throw:
+    // both are inside Box2D's calls, which an exception would leave half done.
+    if (impl.world.IsLocked() || impl.destroying != nullptr)
+    {
+        return false;
+    }
     m_count = impl.DropForgotten(m_count, m_capacity);
     for (std::uint32_t i = 0; i < m_count; ++i)
     {
@@ -774,6 +781,7 @@ void ParticleSystem::Clear()
     m_count = 0;
     impl.candidatesValid = false;
     impl.hitGroups.clear();
+    return true;
 }
 
 void ParticleSystem::InvalidateStaticGeometry()

@@ -130,8 +130,9 @@ public:
 
     /// Removes every particle now (ParticleSystem::Clear): a level restarted in place with the same world
     /// and Effects leaves none of the last attempt's particles behind. Events, scrapes and counters stay
-    /// (EndScrapes ends the scrapes). Not from inside b2World::Step.
-    void ClearParticles();
+    /// (EndScrapes ends the scrapes). Returns false, changing nothing, inside b2World::Step (a contact
+    /// listener) or from a destruction listener while a particle's body is being destroyed.
+    bool ClearParticles();
 
     /// The particles' static geometry cache (ParticleSystem): build it now, after loading a level, rather
     /// than in the first step with a colliding particle (returns whether it built); or, with

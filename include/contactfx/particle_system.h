@@ -183,9 +183,10 @@ public:
     /// finite; nothing changes then.
     void ShiftOrigin(b2Vec2 newOrigin);
     /// Removes every particle now (a level restarted in place), destroying the bodies of body-backed ones;
-    /// Hits() is empty until the next step. Counters and the static cache stay. Not from inside
-    /// b2World::Step (its listeners): Box2D cannot destroy bodies then.
-    void Clear();
+    /// Hits() is empty until the next step. Counters and the static cache stay. Returns false, changing
+    /// nothing, when called inside b2World::Step (a contact listener: Box2D cannot destroy bodies then) or
+    /// from a destruction listener while this system destroys a particle's body.
+    bool Clear();
     /// Rebuilds the static geometry cache at the next step (or BuildStaticGeometry). Needed only with
     /// ParticleSystemOptions::watchStaticGeometry false; otherwise every change of the static geometry, a
     /// shape edited in place too, is detected.

@@ -284,4 +284,43 @@ TEST(Particles, ClearParticlesRemovesEveryParticleAndItsBody)
     }
 }
 
+// ClearParticles where it cannot run refuses, changing nothing (a re-check: from the application's
+// destruction listener while a clear destroyed particle bodies it destroyed one twice; from a contact
+// listener Box2D's locked world aborted).
+TEST(Particles, ClearParticlesRefusesInsideTheWorldStepAndInsideABodysDestruction)
+{
+    struct Listeners final : b2ContactListener, b2DestructionListener
+    {
+        void BeginContact(b2Contact*) override { results.push_back(fx->ClearParticles()); }
+        void SayGoodbye(b2Joint*) override {}
+        void SayGoodbye(b2Fixture*) override { results.push_back(fx->ClearParticles()); }
+        Effects* fx = nullptr;
+        std::vector<bool> results;
+    };
+    TestWorld scene;
+    Listeners listeners;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.Attach(TutorialPreset(), 1, &listeners); // a body per particle
+    listeners.fx = &fx;
+    fx.SetDestructionListener(&listeners);
+    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    for (int i = 0; i < 30; ++i)
+    {
+        box->SetLinearVelocity(b2Vec2(8.0f, box->GetLinearVelocity().y));
+        scene.Step();
+    }
+    ASSERT_FALSE(listeners.results.empty()) << "particle bodies touched the ground inside the world steps";
+    EXPECT_EQ(std::count(listeners.results.begin(), listeners.results.end(), true), 0);
+    const std::uint32_t live = fx.Particles().count;
+    ASSERT_GT(live, 0u);
+    listeners.results.clear();
+    EXPECT_TRUE(fx.ClearParticles());
+    ASSERT_FALSE(listeners.results.empty()) << "the particles' fixtures said goodbye";
+    EXPECT_EQ(std::count(listeners.results.begin(), listeners.results.end(), true), 0);
+    EXPECT_EQ(fx.Particles().count, 0u);
+    EXPECT_EQ(scene.world->GetBodyCount(), 2) << "only the ground and the box are left";
+}
+
 } // namespace cfx::test
