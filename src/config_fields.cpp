@@ -316,11 +316,12 @@ const std::array kRuleFields{
              .step = 1.0f},
     Field<R>{.name = "emission",
              .member = Choice<&R::emission>(),
-             .doc = "particles per second per body pair growing with its intensity (independent of the step "
-                    "rate and of how each body's surface is cut into fixtures, chain segments and manifold "
-                    "points; a ground made of several bodies is several pairs, each emitting), or one per "
-                    "sample per contact per step (the tutorial: the emission then follows the step rate, twice "
-                    "as many at 120 Hz as at 60)",
+             .doc =
+                 "particles per second per body pair growing with its intensity (independent of the step "
+                 "rate and of how each body's surface is cut into fixtures, chain segments and manifold "
+                 "points; a ground made of several bodies is several pairs, each emitting), or one per "
+                 "sample per contact per step (the tutorial: the emission then follows the step rate, twice "
+                 "as many at 120 Hz as at 60)",
              .choices = kEmissionModes},
     Field<R>{.name = "placement",
              .member = Choice<&R::placement>(),
@@ -418,10 +419,11 @@ const std::array kSoundFields{
               .member = &SC::impactMergeWindow,
               .unit = "s",
               .range = {0.0f, 10.0f},
-              .doc = "impacts of one body pair within this time of its impact voice's start merge into "
-                     "that voice, which takes the loudest; particle hits of one type and body gather this long "
-                     "(at most `particleHitLength`, the whole steps that fit) before their voice starts, so "
-                     "it is also their delay",
+              .doc =
+                  "impacts of one body pair within this time of its impact voice's start merge into "
+                  "that voice, which takes the loudest; particle hits of one type and body gather this long "
+                  "(at most `particleHitLength`, the whole steps that fit) before their voice starts, so "
+                  "it is also their delay",
               .step = 0.005f},
     Field<SC>{.name = "trackedPairs",
               .member = &SC::trackedPairs,

@@ -15,12 +15,12 @@ namespace cfx
 /// threshold), at most 100, oldest recycled. Life losses per step are expressed as lifetimes at the
 /// tutorial's 60 Hz. One particle per contact per step makes the emission follow the step rate (twice as
 /// many at 120 Hz as at 60), and with at most 100 the oldest are recycled sooner: the demo's smoke lives
-/// 1.62 s at 30 and 60 Hz, 0.83 s at 120 Hz and 0.42 s at 240 Hz (a trial), as the tutorial's would. Fixtures without a `material` property get the tutorial's guesses as assignments:
-/// steel on bodies heavier than 3 kg, concrete on static fixtures with friction > 0.5, dirt on static ones
-/// with friction < 0.5, rubber on other dynamic bodies heavier than 0.4 kg.
-/// Where it still differs from the tutorial's own code: a contact the application disabled in PreSolve
-/// emits nothing (the tutorial's loop only looks at the point count); particles are drawn in contactfx's
-/// style (docs/rendering.md), not as the tutorial's 8-pixel points.
+/// 1.62 s at 30 and 60 Hz, 0.83 s at 120 Hz and 0.42 s at 240 Hz (a trial), as the tutorial's would. Fixtures
+/// without a `material` property get the tutorial's guesses as assignments: steel on bodies heavier than 3
+/// kg, concrete on static fixtures with friction > 0.5, dirt on static ones with friction < 0.5, rubber on
+/// other dynamic bodies heavier than 0.4 kg. Where it still differs from the tutorial's own code: a contact
+/// the application disabled in PreSolve emits nothing (the tutorial's loop only looks at the point count);
+/// particles are drawn in contactfx's style (docs/rendering.md), not as the tutorial's 8-pixel points.
 EffectsConfig TutorialPreset();
 
 /// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction
