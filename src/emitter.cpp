@@ -473,9 +473,9 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
 
 void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
 {
-    const float from = std::max(context.rule.impactThreshold, context.rule.burstThreshold);
     const float burst =
-        std::min(context.rule.burstMax, context.rule.burstPerSpeed * (tracked.approachSpeed - from));
+        std::min(context.rule.burstMax,
+                 context.rule.burstPerSpeed * (tracked.approachSpeed - context.rule.BurstFrom()));
     const int count = Budgeted(burst, context.stats);
     if (count > 0)
     {

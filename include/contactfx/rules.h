@@ -86,6 +86,10 @@ struct RuleDef
     /// Most particles one impact bursts, [0, 1e5].
     float burstMax = 50.0f;
 
+    /// The approach speed (m/s) an impact's burst counts from: the higher of impactThreshold and
+    /// burstThreshold. An impact bursts min(burstMax, burstPerSpeed * (approach speed - this)) particles.
+    float BurstFrom() const { return impactThreshold > burstThreshold ? impactThreshold : burstThreshold; }
+
     bool operator==(const RuleDef&) const = default;
 };
 

@@ -18,13 +18,18 @@
 namespace cfx::render
 {
 
+void TuningRecorder::Totals::Add(const Totals& later)
+{
+    intensity = std::max(intensity, later.intensity);
+    spawned += later.spawned;
+    approach = std::max(approach, later.approach);
+    impacts += later.impacts;
+}
+
 TuningRecorder::TuningRecorder(std::size_t ruleCount, std::size_t maxBuckets)
     : m_rules(ruleCount), m_maxBuckets(std::max<std::size_t>(2, maxBuckets + (maxBuckets % 2)))
 {
-    m_intensity.assign(m_maxBuckets * m_rules, 0.0f);
-    m_spawned.assign(m_maxBuckets * m_rules, 0);
-    m_approach.assign(m_maxBuckets * m_rules, 0.0f);
-    m_impacts.assign(m_maxBuckets * m_rules, 0);
+    m_totals.assign(m_maxBuckets * m_rules, Totals{});
     m_duration.assign(m_maxBuckets, 0.0);
 }
 
@@ -35,12 +40,9 @@ void TuningRecorder::Halve()
     {
         for (std::size_t r = 0; r < m_rules; ++r)
         {
-            const std::size_t a = 2 * b * m_rules + r;
-            const std::size_t c = (2 * b + 1) * m_rules + r;
-            m_intensity[b * m_rules + r] = std::max(m_intensity[a], m_intensity[c]);
-            m_spawned[b * m_rules + r] = m_spawned[a] + m_spawned[c];
-            m_approach[b * m_rules + r] = std::max(m_approach[a], m_approach[c]);
-            m_impacts[b * m_rules + r] = m_impacts[a] + m_impacts[c];
+            Totals merged = m_totals[2 * b * m_rules + r];
+            merged.Add(m_totals[(2 * b + 1) * m_rules + r]);
+            m_totals[b * m_rules + r] = merged;
         }
         m_duration[b] = m_duration[2 * b] + m_duration[2 * b + 1];
     }
@@ -59,10 +61,7 @@ void TuningRecorder::Record(const EffectsStats& stats, float dt)
             Halve();
         }
         const std::size_t b = m_bucketCount++;
-        std::fill_n(m_intensity.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0.0f);
-        std::fill_n(m_spawned.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0);
-        std::fill_n(m_approach.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0.0f);
-        std::fill_n(m_impacts.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, 0);
+        std::fill_n(m_totals.begin() + static_cast<std::ptrdiff_t>(b * m_rules), m_rules, Totals{});
         m_duration[b] = 0.0;
         m_stepsInLast = 0;
     }
@@ -74,12 +73,9 @@ void TuningRecorder::Record(const EffectsStats& stats, float dt)
     const std::size_t rules = std::min(m_rules, stats.rules.size());
     for (std::size_t r = 0; r < rules; ++r)
     {
-        float& intensity = m_intensity[b * m_rules + r];
-        intensity = std::max(intensity, stats.rules[r].intensityMaxLastStep);
-        m_spawned[b * m_rules + r] += stats.rules[r].spawnedLastStep;
-        float& approach = m_approach[b * m_rules + r];
-        approach = std::max(approach, stats.rules[r].approachMaxLastStep);
-        m_impacts[b * m_rules + r] += stats.rules[r].impactsLastStep;
+        const RuleStats& rule = stats.rules[r];
+        m_totals[b * m_rules + r].Add(Totals{rule.intensityMaxLastStep, rule.spawnedLastStep,
+                                             rule.approachMaxLastStep, rule.impactsLastStep});
     }
     m_duration[b] += dt;
     m_seconds += dt;
@@ -163,11 +159,8 @@ struct Column
 {
     double start = 0.0;    // s
     double duration = 0.0; // s
-    float intensity = 0.0f;
-    std::uint64_t spawned = 0;
-    float approach = 0.0f; // m/s, fastest new touch
-    std::uint64_t impacts = 0;
-    double Rate() const { return static_cast<double>(spawned) / duration; }
+    TuningRecorder::Totals totals;
+    double Rate() const { return static_cast<double>(totals.spawned) / duration; }
 };
 
 std::vector<Column> Columns(const TuningRecorder& recorder, std::size_t rule, double minSeconds)
@@ -178,14 +171,11 @@ std::vector<Column> Columns(const TuningRecorder& recorder, std::size_t rule, do
     {
         if (columns.empty() || columns.back().duration >= minSeconds)
         {
-            columns.push_back(Column{.start = t});
+            columns.push_back(Column{.start = t, .duration = 0.0, .totals = {}});
         }
         Column& column = columns.back();
         column.duration += recorder.Duration(b);
-        column.intensity = std::max(column.intensity, recorder.Intensity(b, rule));
-        column.spawned += recorder.Spawned(b, rule);
-        column.approach = std::max(column.approach, recorder.Approach(b, rule));
-        column.impacts += recorder.Impacts(b, rule);
+        column.totals.Add(recorder.At(b, rule));
         t += recorder.Duration(b);
     }
     return columns;
@@ -244,16 +234,11 @@ void LevelLine(cairo_t* cr, const Panel& p, double level, double top, Rgb color,
 /// The strip under a rule's chart: each column's fastest new touch as a bar of its approach speed, grey
 /// below impactThreshold, white where it made an impact event, amber where that impact burst particles;
 /// the thresholds as dashed lines.
-void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& columns, double seconds,
-                     const RuleDef& def)
+void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& columns, float peak,
+                     double seconds, const RuleDef& def)
 {
-    const double burstFrom = std::max(def.impactThreshold, def.burstThreshold);
+    const double burstFrom = def.BurstFrom();
     const bool bursts = def.burstPerSpeed > 0.0f;
-    float peak = 0.0f;
-    for (const Column& column : columns)
-    {
-        peak = std::max(peak, column.approach);
-    }
     const double top = AxisTop(peak, bursts ? burstFrom : def.impactThreshold);
     auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
     auto yAt = [&](double v) { return p.y + p.height * (1.0 - v / top); };
@@ -272,16 +257,16 @@ void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& col
     VerticalText(cr, p.x - 52.0, p.y + 0.5 * p.height, "m/s");
     for (const Column& column : columns)
     {
-        if (column.approach <= 0.0f && column.impacts == 0)
+        if (column.totals.approach <= 0.0f && column.totals.impacts == 0)
         {
             continue;
         }
-        const bool burst = column.impacts > 0 && bursts && column.approach > burstFrom;
-        SetColor(cr, burst ? kBurst : column.impacts > 0 ? kImpact : kSoftTouch);
+        const bool burst = column.totals.impacts > 0 && bursts && column.totals.approach > burstFrom;
+        SetColor(cr, burst ? kBurst : column.totals.impacts > 0 ? kImpact : kSoftTouch);
         const double x0 = xAt(column.start);
         const double x1 = std::max(xAt(column.start + column.duration) - 1.0, x0 + 1.0);
         // At least 2 px tall: an impact at 0 m/s (impactThreshold 0) shows too.
-        const double y = std::min(yAt(std::min<double>(column.approach, top)), yAt(0.0) - 2.0);
+        const double y = std::min(yAt(std::min<double>(column.totals.approach, top)), yAt(0.0) - 2.0);
         cairo_rectangle(cr, x0, y, x1 - x0, yAt(0.0) - y);
         cairo_fill(cr);
     }
@@ -310,19 +295,16 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
     const Panel p{panel.x, panel.y, panel.width, panel.height - stripHeight - 2.0};
     const double seconds = std::max(recorder.Seconds(), 1e-9);
     const std::vector<Column> columns = Columns(recorder, rule, seconds * kColumnPixels / p.width);
-    float peak = 0.0f;
+    TuningRecorder::Totals all; // over the whole run
     double peakRate = 0.0;
-    std::uint64_t total = 0;
-    std::uint64_t impacts = 0;
     for (const Column& column : columns)
     {
-        peak = std::max(peak, column.intensity);
+        all.Add(column.totals);
         peakRate = std::max(peakRate, column.Rate());
-        total += column.spawned;
-        impacts += column.impacts;
     }
-    DrawImpactStrip(cr, Panel{p.x, p.y + p.height + 2.0, p.width, stripHeight}, columns, seconds, def);
-    const double top = AxisTop(peak, def.threshold);
+    DrawImpactStrip(cr, Panel{p.x, p.y + p.height + 2.0, p.width, stripHeight}, columns, all.approach,
+                    seconds, def);
+    const double top = AxisTop(all.intensity, def.threshold);
     const double rateTop = std::max(peakRate, 1.0) * 1.1;
     auto xAt = [&](double t) { return p.x + p.width * t / seconds; };
     auto yAt = [&](double v) { return p.y + p.height * (1.0 - v / top); };
@@ -336,7 +318,7 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
     SetColor(cr, particleColor, 0.13);
     for (const Column& column : columns)
     {
-        if (column.spawned > 0)
+        if (column.totals.spawned > 0)
         {
             const double x0 = xAt(column.start);
             cairo_rectangle(cr, x0, p.y, xAt(column.start + column.duration) - x0, p.height);
@@ -381,8 +363,8 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
     // Intensity: the largest sample of each column, across the column (so one step is a line too).
     for (const Column& column : columns)
     {
-        cairo_line_to(cr, xAt(column.start), yAt(column.intensity));
-        cairo_line_to(cr, xAt(column.start + column.duration), yAt(column.intensity));
+        cairo_line_to(cr, xAt(column.start), yAt(column.totals.intensity));
+        cairo_line_to(cr, xAt(column.start + column.duration), yAt(column.totals.intensity));
     }
     SetColor(cr, kIntensity);
     cairo_set_line_width(cr, 1.5);
@@ -397,8 +379,8 @@ void DrawPanel(cairo_t* cr, const Panel& panel, const TuningRecorder& recorder, 
     SetColor(cr, kText);
     Text(cr, p.x + 8.0, p.y + 17.0,
          def.materialA + " + " + def.materialB + "  \xE2\x86\x92  " + def.particleType + "   (" +
-             std::to_string(total) + " particles, " + std::to_string(impacts) +
-             (impacts == 1 ? " impact)" : " impacts)"));
+             std::to_string(all.spawned) + " particles, " + std::to_string(all.impacts) +
+             (all.impacts == 1 ? " impact)" : " impacts)"));
 }
 
 } // namespace

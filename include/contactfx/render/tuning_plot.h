@@ -27,6 +27,17 @@ namespace cfx::render
 class TuningRecorder
 {
 public:
+    /// What a bucket holds of one rule, and how two stretches of time fold into one.
+    struct Totals
+    {
+        float intensity = 0.0f;    ///< largest sample intensity
+        std::uint64_t spawned = 0; ///< particles emitted
+        float approach = 0.0f;     ///< m/s: fastest approach of a new touch, impact or not; 0: none
+        std::uint64_t impacts = 0; ///< impact events made
+        /// Takes `later` in: the largest of the peaks, the sum of the counts.
+        void Add(const Totals& later);
+    };
+
     /// For a configuration with `ruleCount` rules; keeps at most `maxBuckets` (>= 2, rounded up to an
     /// even number) time buckets.
     explicit TuningRecorder(std::size_t ruleCount, std::size_t maxBuckets = 1200);
@@ -41,23 +52,16 @@ public:
     /// s covered by each bucket (the last one may be partly filled).
     double BucketSeconds() const { return m_bucketSeconds; }
     double Seconds() const { return m_seconds; }
+    /// Rule `rule` in bucket `bucket`.
+    const Totals& At(std::size_t bucket, std::size_t rule) const { return m_totals[bucket * m_rules + rule]; }
     /// Largest sample intensity of rule `rule` in bucket `bucket`.
-    float Intensity(std::size_t bucket, std::size_t rule) const
-    {
-        return m_intensity[bucket * m_rules + rule];
-    }
+    float Intensity(std::size_t bucket, std::size_t rule) const { return At(bucket, rule).intensity; }
     /// Particles rule `rule` emitted in bucket `bucket`.
-    std::uint64_t Spawned(std::size_t bucket, std::size_t rule) const
-    {
-        return m_spawned[bucket * m_rules + rule];
-    }
+    std::uint64_t Spawned(std::size_t bucket, std::size_t rule) const { return At(bucket, rule).spawned; }
     /// Fastest approach (m/s) of a new touch of rule `rule` in bucket `bucket`, impact or not; 0: none.
-    float Approach(std::size_t bucket, std::size_t rule) const { return m_approach[bucket * m_rules + rule]; }
+    float Approach(std::size_t bucket, std::size_t rule) const { return At(bucket, rule).approach; }
     /// Impact events rule `rule` made in bucket `bucket`.
-    std::uint64_t Impacts(std::size_t bucket, std::size_t rule) const
-    {
-        return m_impacts[bucket * m_rules + rule];
-    }
+    std::uint64_t Impacts(std::size_t bucket, std::size_t rule) const { return At(bucket, rule).impacts; }
     /// s of simulated time in bucket `bucket`.
     double Duration(std::size_t bucket) const { return m_duration[bucket]; }
 
@@ -71,11 +75,8 @@ private:
     std::size_t m_stepsInLast = 0;
     double m_bucketSeconds = 0.0;
     double m_seconds = 0.0;
-    std::vector<float> m_intensity;       // bucket-major
-    std::vector<std::uint64_t> m_spawned; // bucket-major
-    std::vector<float> m_approach;        // bucket-major
-    std::vector<std::uint64_t> m_impacts; // bucket-major
-    std::vector<double> m_duration;       // per bucket
+    std::vector<Totals> m_totals;   // bucket-major
+    std::vector<double> m_duration; // per bucket
 };
 
 /// The plot of `recorder`'s run of `config` as PNG bytes: `width` x (header + one panel per rule) px.
