@@ -113,6 +113,12 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
             check.Fail(path, "expected a non-empty pattern (\"*\" matches any name)");
         }
         break;
+    case TextRule::optionalParticleType:
+        if (!text.empty())
+        {
+            CheckText(check, path, text, TextRule::particleType, config);
+        }
+        break;
     case TextRule::material:
     case TextRule::particleType:
         if (text.empty()) // not set: never a match, even for a nameless entry (itself an error)

@@ -49,6 +49,8 @@ std::string_view ExpectedText(TextRule rule)
         return "a material name";
     case TextRule::particleType:
         return "a particle type name";
+    case TextRule::optionalParticleType:
+        return "a particle type name or \"\"";
     }
     return "a string";
 }
@@ -314,6 +316,11 @@ const std::array kRuleFields{
              .range = {0.0f, 1.0e5f},
              .doc = "most particles one impact bursts",
              .step = 1.0f},
+    Field<R>{.name = "burstParticleType",
+             .member = &R::burstParticleType,
+             .doc = "what impacts burst; `\"\"`: the rule's `particleType` (so one pair can scrape dust and "
+                    "burst splinters)",
+             .text = TextRule::optionalParticleType},
     Field<R>{.name = "emission",
              .member = Choice<&R::emission>(),
              .doc =

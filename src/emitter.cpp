@@ -127,6 +127,9 @@ struct Emitter::RuleContext
     RuleStats& ruleStats;
     std::span<const TrackedContact> contacts;
     float dt;
+    /// What the rule's impacts burst: RuleDef::burstParticleType, else the rule's own type.
+    const ParticleTypeDef& burstType;
+    ParticleTypeId burstTypeId;
 };
 
 Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStarts)
@@ -134,7 +137,10 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStar
 {
     for (const RuleDef& rule : config.rules)
     {
-        m_ruleTypes.push_back(config.FindParticleType(rule.particleType));
+        const ParticleTypeId type = config.FindParticleType(rule.particleType);
+        m_ruleTypes.push_back(type);
+        m_burstTypes.push_back(
+            rule.burstParticleType.empty() ? type : config.FindParticleType(rule.burstParticleType));
     }
     // Room for the configured number of touching contacts (budget.contacts), each a pair of its own
     // with both manifold points at most.
@@ -170,6 +176,7 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
         const RuleId ruleId{static_cast<std::uint16_t>(ruleIndex)};
         const RuleDef& rule = config.rules[ruleIndex];
         const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
+        const ParticleTypeId burstTypeId = m_burstTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
         std::span<const TrackedContact> contacts = tracker.Contacts(ruleId);
         RuleContext context{world,
@@ -183,7 +190,9 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
                             typeId,
                             ruleStats,
                             contacts,
-                            dt};
+                            dt,
+                            config.particleTypes[burstTypeId.index],
+                            burstTypeId};
         ruleStats.contacts = static_cast<std::uint32_t>(contacts.size());
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
@@ -374,7 +383,7 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
             if (sample.ownIntensity > rule.threshold)
             {
                 SpawnParticles(context, context.contacts[sample.contact], sample.sample, sample.ownIntensity,
-                               1);
+                               1, context.type, context.typeId);
             }
         }
     }
@@ -466,7 +475,8 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
         given = std::max(given, upTo);
         if (share > 0)
         {
-            SpawnParticles(context, context.contacts[sample.contact], sample.sample, intensity, share);
+            SpawnParticles(context, context.contacts[sample.contact], sample.sample, intensity, share,
+                           context.type, context.typeId);
         }
     }
 }
@@ -485,12 +495,13 @@ void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
             context.stats.nonFiniteSamples += 1; // a body's velocity went non-finite since it touched
             return;
         }
-        SpawnParticles(context, tracked, sample, tracked.approachSpeed, count);
+        SpawnParticles(context, tracked, sample, tracked.approachSpeed, count, context.burstType,
+                       context.burstTypeId);
     }
 }
 
 void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
-                             float intensity, int count)
+                             float intensity, int count, const ParticleTypeDef& type, ParticleTypeId typeId)
 {
     if (count > m_spawnBudget)
     {
@@ -503,7 +514,6 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     }
     m_spawnBudget -= count;
     const RuleDef& rule = context.rule;
-    const ParticleTypeDef& type = context.type;
     const b2Contact* contact = tracked.contact;
     const b2Fixture* fixtureA = contact->GetFixtureA();
     const b2Fixture* fixtureB = contact->GetFixtureB();
@@ -571,7 +581,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
         spawn.velocity.x += m_random.Range(-type.spread, type.spread);
         spawn.velocity.y += m_random.Range(-type.spread, type.spread);
         spawn.life = life;
-        spawn.type = context.typeId;
+        spawn.type = typeId;
         // Finite inputs times absurd factors (inheritance, spread) can still overflow: no such particle.
         if (Finite(spawn.position) && Finite(spawn.velocity))
         {
@@ -582,7 +592,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     context.stats.nonFiniteSamples += static_cast<std::uint64_t>(count - spawned);
     context.ruleStats.spawned += static_cast<std::uint64_t>(spawned);
     context.ruleStats.spawnedLastStep += static_cast<std::uint32_t>(spawned);
-    context.stats.spawnedByType[context.typeId.index] += static_cast<std::uint64_t>(spawned);
+    context.stats.spawnedByType[typeId.index] += static_cast<std::uint64_t>(spawned);
 }
 
 } // namespace cfx::detail

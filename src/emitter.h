@@ -122,18 +122,21 @@ private:
     int Budgeted(float owed, EffectsStats& stats) const;
     void EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity);
     void Burst(RuleContext& context, const TrackedContact& tracked);
+    /// Spawns `count` particles of `type` (`typeId`) at the sample: the rule's type for its scrapes, its
+    /// burst type for its impacts.
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
-                        float intensity, int count);
+                        float intensity, int count, const ParticleTypeDef& type, ParticleTypeId typeId);
 
     Random m_random;
     bool m_auditStarts;
-    std::vector<ParticleTypeId> m_ruleTypes; // per rule: its particle type, resolved once by name
-    std::uint64_t m_stamp = 0;               // one per rule per Emit
-    std::vector<PairStep> m_pairSteps;       // by pair slot
-    std::vector<RateState> m_rates;          // by pair slot
-    std::vector<std::uint32_t> m_order;      // pair slots of the rule, in order of their first contact
-    std::vector<Sample> m_samples;           // this rule's samples
-    int m_spawnBudget = 0;                   // particles this Emit may still spawn (the pool's capacity)
+    std::vector<ParticleTypeId> m_ruleTypes;  // per rule: its particle type, resolved once by name
+    std::vector<ParticleTypeId> m_burstTypes; // per rule: the type its impacts burst
+    std::uint64_t m_stamp = 0;                // one per rule per Emit
+    std::vector<PairStep> m_pairSteps;        // by pair slot
+    std::vector<RateState> m_rates;           // by pair slot
+    std::vector<std::uint32_t> m_order;       // pair slots of the rule, in order of their first contact
+    std::vector<Sample> m_samples;            // this rule's samples
+    int m_spawnBudget = 0;                    // particles this Emit may still spawn (the pool's capacity)
 };
 
 } // namespace cfx::detail

@@ -30,11 +30,18 @@ bool Text(const char* label, std::string& value)
     return Finished();
 }
 
-bool NameCombo(const char* label, std::string& value, const std::vector<std::string>& names)
+// `emptyName` (not null): the field may be empty, shown and offered as that.
+bool NameCombo(const char* label, std::string& value, const std::vector<std::string>& names,
+               const char* emptyName = nullptr)
 {
     bool changed = false;
-    if (ImGui::BeginCombo(label, value.c_str()))
+    if (ImGui::BeginCombo(label, value.empty() && emptyName != nullptr ? emptyName : value.c_str()))
     {
+        if (emptyName != nullptr && ImGui::Selectable(emptyName, value.empty()))
+        {
+            changed = !value.empty();
+            value.clear();
+        }
         for (const std::string& name : names)
         {
             if (ImGui::Selectable(name.c_str(), name == value))
@@ -120,6 +127,11 @@ bool EditFields(S& value, std::span<const Field<S>> fields, const EffectsConfig&
                     else if (field.text == TextRule::particleType)
                     {
                         finished |= NameCombo(label.c_str(), value.*member, ParticleTypeNames(draft));
+                    }
+                    else if (field.text == TextRule::optionalParticleType)
+                    {
+                        finished |= NameCombo(label.c_str(), value.*member, ParticleTypeNames(draft),
+                                              "(the rule's particleType)");
                     }
                     else
                     {

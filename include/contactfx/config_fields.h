@@ -50,6 +50,9 @@ enum class TextRule : std::uint8_t
     pattern,      ///< a non-empty glob (assignments.h)
     material,     ///< the name of one of the config's materials
     particleType, ///< the name of one of the config's particle types
+    /// The name of one of the config's particle types, or empty (the field then falls back to another;
+    /// RuleDef::burstParticleType).
+    optionalParticleType,
 };
 
 /// An enum member, read and written as the index of its value (enum values are 0, 1, ... in declaration

@@ -76,8 +76,8 @@ struct RuleDef
     float scrapeEndDelay = 0.1f;
     /// Approach speed along the normal at a new touch (events.h) that makes an impact event, m/s, [0, 1e4].
     float impactThreshold = 2.0f;
-    /// Particles of the rule's type burst per m/s of approach speed above impactThreshold (or above
-    /// burstThreshold when that is higher), [0, 1e4].
+    /// Particles of the rule's burst type (burstParticleType) burst per m/s of approach speed above
+    /// impactThreshold (or above burstThreshold when that is higher), [0, 1e4].
     float burstPerSpeed = 0.0f;
     /// Approach speed (m/s, [0, 1e4]) an impact must pass to burst, when it is above impactThreshold: soft
     /// impacts then make events (and sound) without particles. At or below impactThreshold (0 by default)
@@ -85,6 +85,9 @@ struct RuleDef
     float burstThreshold = 0.0f;
     /// Most particles one impact bursts, [0, 1e5].
     float burstMax = 50.0f;
+    /// The particle type impacts burst; empty: particleType. One pair can so scrape one type and burst
+    /// another (wood on stone: dust while a crate slides, splinters when it lands hard).
+    std::string burstParticleType;
 
     /// The approach speed (m/s) an impact's burst counts from: the higher of impactThreshold and
     /// burstThreshold. An impact bursts min(burstMax, burstPerSpeed * (approach speed - this)) particles.

@@ -402,6 +402,13 @@ template <typename S> Json WriteObject(std::span<const Field<S>> fields, const S
                 {
                     out[key] = WriteObject(IntensityFields(), in.*member);
                 }
+                else if constexpr (std::is_same_v<M, std::string S::*>)
+                {
+                    if (!(in.*member).empty() || field.text != TextRule::optionalParticleType)
+                    {
+                        out[key] = in.*member; // an optional name is written only when set
+                    }
+                }
                 else
                 {
                     out[key] = in.*member;

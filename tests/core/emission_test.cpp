@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace cfx::test
@@ -198,6 +200,60 @@ TEST(Emission, ABurstThresholdKeepsSoftImpactsAsEventsWithoutParticles)
                   soft.approach > from ? static_cast<std::uint64_t>(10.0f * (soft.approach - from)) : 0u);
         EXPECT_EQ(hard.sparks, static_cast<std::uint64_t>(10.0f * (hard.approach - from)));
     }
+}
+
+// A trial's artist wanted wood on stone to scrape dust and burst splinters: one rule per pair, and a burst
+// was always of the rule's type. burstParticleType names the type its impacts burst.
+TEST(Emission, ARulesImpactsBurstItsBurstTypeWhileItsScrapesEmitItsOwn)
+{
+    const auto drop = [](const std::string& burstType)
+    {
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.56f), 0.5f, 0.5f, 0.5f);
+        box->SetLinearVelocity(b2Vec2(0.0f, -9.0f)); // lands hard, then is pushed along
+        EffectsConfig config = DefaultPreset();
+        config.budget.capacity = 100000;
+        RuleDef& rule = config.rules[0]; // steel on concrete: sparks
+        rule.burstPerSpeed = 10.0f;
+        rule.burstMax = 1000.0f;
+        rule.burstParticleType = burstType;
+        Effects& fx = scene.Attach(std::move(config));
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        float approach = 0.0f;
+        std::uint64_t sparksAfterLanding = 0;
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.world->Step(1.0f / 60.0f, 8, 3);
+            if (i >= 10) // after the landing, pushed along the ground
+            {
+                box->SetLinearVelocity(b2Vec2(5.0f, box->GetLinearVelocity().y));
+                box->SetAngularVelocity(0.0f);
+            }
+            fx.Step(1.0f / 60.0f);
+            for (const EffectEvent& event : fx.Events())
+            {
+                if (event.type == EffectEventType::impact)
+                {
+                    approach = event.approachSpeed;
+                    sparksAfterLanding = scene.Spawned("sparks");
+                }
+            }
+        }
+        return std::tuple{approach, scene.Spawned("sparks"), scene.Spawned("dirt"), sparksAfterLanding};
+    };
+    const auto [approach, sparks, dirt, sparksAtLanding] = drop("dirt");
+    ASSERT_GT(approach, 6.0f) << "one hard landing";
+    const auto burst = static_cast<std::uint64_t>(10.0f * (approach - 2.0f));
+    EXPECT_EQ(dirt, burst) << "the burst is of the burst type";
+    EXPECT_GT(sparks, sparksAtLanding) << "the slide after it scrapes the rule's own type";
+    // Empty: the rule's own type, as before.
+    const auto [sameApproach, ownSparks, ownDirt, ownAtLanding] = drop("");
+    EXPECT_EQ(sameApproach, approach);
+    EXPECT_EQ(ownDirt, 0u);
+    EXPECT_EQ(ownSparks, sparks + burst);
+    (void)ownAtLanding;
 }
 
 TEST(Emission, ALandingsPressureSpikeIsNotCutByTheCapAtAnyStepRate)

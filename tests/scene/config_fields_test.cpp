@@ -142,6 +142,7 @@ template <typename S> void SetOtherValue(S& value, const Field<S>& field)
                     value.*member = value.*member == "m2" ? "m1" : "m2";
                     break;
                 case TextRule::particleType:
+                case TextRule::optionalParticleType:
                     value.*member = value.*member == "p2" ? "p1" : "p2";
                     break;
                 case TextRule::pattern:
@@ -262,6 +263,7 @@ TEST(ConfigFields, TheWriterWritesExactlyTheTablesFields)
     config.assignments[0].frictionBelow = 0.2f;
     config.assignments[0].massAbove = 1.0f;
     config.assignments[0].massBelow = 2.0f;
+    config.rules[0].burstParticleType = config.rules[0].particleType; // an optional name, when set
     const nlohmann::json root = nlohmann::json::parse(SaveEffectsString(config));
     auto keysOf = [](const nlohmann::json& object)
     {
@@ -286,6 +288,10 @@ TEST(ConfigFields, TheWriterWritesExactlyTheTablesFields)
     EXPECT_EQ(keysOf(root["rules"][0]["intensity"]), namesOf(IntensityFields()));
     EXPECT_EQ(keysOf(root["assignments"][0]), namesOf(AssignmentFields()));
     EXPECT_EQ(keysOf(root["budget"]), namesOf(BudgetFields()));
+    config.rules[0].burstParticleType.clear(); // and not when empty
+    std::set<std::string> ruleKeys = namesOf(RuleFields());
+    ruleKeys.erase("burstParticleType");
+    EXPECT_EQ(keysOf(nlohmann::json::parse(SaveEffectsString(config))["rules"][0]), ruleKeys);
     std::set<std::string> soundKeys = namesOf(SoundFields());
     soundKeys.insert("rules");
     EXPECT_EQ(keysOf(root["sound"]), soundKeys);
@@ -490,12 +496,16 @@ void DocRows(std::span<const Field<S>> fields, const S& defaults, const std::str
                 }
                 else if constexpr (std::is_same_v<M, std::string S::*>)
                 {
-                    static constexpr const char* kRules[] = {
-                        "text", "unique, non-empty, no control characters", "non-empty glob",
-                        "a material name", "a particle type name"};
+                    static constexpr const char* kRules[] = {"text",
+                                                             "unique, non-empty, no control characters",
+                                                             "non-empty glob",
+                                                             "a material name",
+                                                             "a particle type name",
+                                                             "a particle type name or `\"\"`"};
                     values = kRules[static_cast<int>(field.text)];
                     // What the reader requires (IsRequired) has no default to show.
-                    EXPECT_EQ(IsRequired(field), (defaults.*member).empty() && field.text != TextRule::any)
+                    EXPECT_EQ(IsRequired(field), (defaults.*member).empty() && field.text != TextRule::any &&
+                                                     field.text != TextRule::optionalParticleType)
                         << field.name;
                     byDefault = IsRequired(field) ? "(required)" : Quoted(defaults.*member);
                 }
