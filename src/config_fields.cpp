@@ -77,6 +77,7 @@ template <auto Member> constexpr auto Choice()
 constexpr FieldRange kUnit{0.0f, 1.0f};
 
 constexpr std::string_view kBackends[] = {"pool", "body"};
+constexpr std::string_view kVelocityFrames[] = {"surface", "world"};
 constexpr std::string_view kEmissionModes[] = {"rate", "perStep"};
 constexpr std::string_view kPlacements[] = {"surface", "tutorialDrop"};
 constexpr std::string_view kSpeedModes[] = {"full", "tangential"};
@@ -110,7 +111,7 @@ const std::array kParticleTypeFields{
              .member = &P::inheritA,
              .range = {-10.0f, 10.0f},
              .doc = "fraction of the velocity of the body whose material is the rule's `materialA`, at the "
-                    "contact point",
+                    "contact point (relative to the surface, see `velocityFrame`)",
              .step = 0.01f},
     Field<P>{.name = "inheritB",
              .member = &P::inheritB,
@@ -223,6 +224,12 @@ const std::array kParticleTypeFields{
              .member = Choice<&P::backend>(),
              .doc = "a light pool particle, or a Box2D body (the tutorial's way; pushes what it hits)",
              .choices = kBackends},
+    Field<P>{.name = "velocityFrame",
+             .member = Choice<&P::velocityFrame>(),
+             .doc = "`inheritA`, `inheritB` and `slipFactor` are fractions of velocities relative to the "
+                    "surface, whose own velocity is added (a grinding wheel or a conveyor throws the same "
+                    "spray as a still surface), or of world velocities (the tutorial's)",
+             .choices = kVelocityFrames},
 };
 
 using I = IntensityModel;

@@ -528,8 +528,13 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     // The rule's materials name A and B; the contact's fixture order is Box2D's.
     const b2Vec2 ruleVelocityA = tracked.swapped ? sample.velocityB : sample.velocityA;
     const b2Vec2 ruleVelocityB = tracked.swapped ? sample.velocityA : sample.velocityB;
-    const b2Vec2 carried =
-        type.inheritA * ruleVelocityA + type.inheritB * ruleVelocityB + type.slipFactor * slip;
+    // In the surface's frame (VelocityFrame::surface): what a body does over a moving surface looks as it
+    // does over a still one.
+    const b2Vec2 frame = type.velocityFrame == VelocityFrame::surface
+                             ? (surfaceIsA ? sample.velocityA : sample.velocityB)
+                             : b2Vec2(0.0f, 0.0f);
+    const b2Vec2 carried = frame + type.inheritA * (ruleVelocityA - frame) +
+                           type.inheritB * (ruleVelocityB - frame) + type.slipFactor * slip;
     // Where the particles go, seen from the other body's footprint: a sliding block's sparks fall behind
     // it, a spinning wheel's dirt leaves where its rim rises (not where it comes down, which would crush
     // it). Nothing carried along the surface: the side the other body's surface moves to.

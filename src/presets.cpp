@@ -26,6 +26,7 @@ ParticleTypeDef TutorialType(const char* name, Color color)
     type.lifeBase = 0.0f;
     type.lifeFromIntensity = 0.3f;
     type.backend = ParticleBackend::body;
+    type.velocityFrame = VelocityFrame::world; // the tutorial's fractions of world velocities
     type.radius = 0.01f;
     type.density = 1.0f;
     type.friction = 2.0f;

@@ -27,6 +27,18 @@ enum class ParticleBackend : std::uint8_t
     body, ///< a Box2D body with a circle fixture (the tutorial's way): pushes what it hits, costs more
 };
 
+/// What a particle's inherited and slip velocities are measured against (ParticleTypeDef::velocityFrame).
+enum class VelocityFrame : std::uint8_t
+{
+    /// The surface's: start velocity = surface velocity + inheritA * (vA - surface velocity) + inheritB *
+    /// (vB - surface velocity) + slipFactor * slip. What a body does over a moving surface (a conveyor, a
+    /// grinding wheel, a truck's bed) looks as it does over a still one, whichever of the two is the
+    /// surface; over a still surface it is the same as `world`.
+    surface,
+    /// The world's, the tutorial's: start velocity = inheritA * vA + inheritB * vB + slipFactor * slip.
+    world,
+};
+
 /// One particle type. Units: metres, seconds, kilograms. Validated when an Effects object is created; the
 /// ranges keep the simulation finite and its cost bounded (docs/effects-config.md).
 struct ParticleTypeDef
@@ -40,14 +52,18 @@ struct ParticleTypeDef
     /// Seconds for life to fall from 1 to 0 (a particle starting at life 0.5 lives half of it). (0, 3600].
     float lifetime = 1.0f;
 
-    // Start velocity = inheritA * vA + inheritB * vB + slipFactor * (relative tangential velocity of the
-    // other body over the surface) + normalSpeed * surface normal + U(-spread, spread) per axis.
-    // A and B are the bodies whose materials are the rule's materialA and materialB.
+    // Start velocity = surface velocity + inheritA * (vA - surface velocity) + inheritB * (vB - surface
+    // velocity) + slipFactor * (relative tangential velocity of the other body over the surface) +
+    // normalSpeed * surface normal + U(-spread, spread) per axis (velocityFrame: world drops the surface
+    // velocity terms). A and B are the bodies whose materials are the rule's materialA and materialB, all
+    // velocities at the contact point; the surface is the static or kinematic body of the contact, else the
+    // heavier one (docs/design.md).
     float inheritA = 0.0f;    ///< [-10, 10]: fraction of body A's velocity at the contact point
     float inheritB = 0.0f;    ///< [-10, 10]: fraction of body B's velocity at the contact point
     float slipFactor = 0.0f;  ///< [-10, 10]: fraction of the slip velocity (sparks along the scrape)
     float normalSpeed = 0.0f; ///< m/s away from the surface, [-1000, 1000]
     float spread = 0.0f;      ///< m/s, [0, 1000]: uniform random per axis in [-spread, spread]
+    VelocityFrame velocityFrame = VelocityFrame::surface;
 
     // Motion.
     float gravityScale = 1.0f; ///< [-100, 100]: times the world's gravity; negative floats up
