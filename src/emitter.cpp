@@ -89,7 +89,7 @@ bool Finite(const ContactSample& sample)
 {
     return Finite(sample.point) && Finite(sample.normal) && Finite(sample.velocityA) &&
            Finite(sample.velocityB) && std::isfinite(sample.frictionA) && std::isfinite(sample.frictionB) &&
-           std::isfinite(sample.normalForce);
+           std::isfinite(sample.contactFriction) && std::isfinite(sample.normalForce);
 }
 
 bool Asleep(const b2Body* body)
@@ -97,16 +97,22 @@ bool Asleep(const b2Body* body)
     return body->GetType() != b2_staticBody && !body->IsAwake();
 }
 
-// The sample of a contact at a world point, after the step.
-ContactSample SampleAt(const b2Contact* contact, b2Vec2 point, b2Vec2 normal)
+// The sample of a tracked contact at a world point, after the step, as Box2D solved it: with the friction
+// the application set on the contact (TrackedContact::frictionSet), and with its tangent speed (a conveyor
+// belt: b2Contact::SetTangentSpeed) as a motion of fixture A's surface along the tangent, which is how the
+// solver takes it (it drives the slip of B over A to the tangent speed).
+ContactSample SampleAt(const TrackedContact& tracked, b2Vec2 point, b2Vec2 normal)
 {
+    const b2Contact* contact = tracked.contact;
     ContactSample sample;
     sample.point = point;
     sample.normal = normal;
-    sample.velocityA = contact->GetFixtureA()->GetBody()->GetLinearVelocityFromWorldPoint(point);
+    sample.velocityA = contact->GetFixtureA()->GetBody()->GetLinearVelocityFromWorldPoint(point) +
+                       contact->GetTangentSpeed() * b2Cross(normal, 1.0f);
     sample.velocityB = contact->GetFixtureB()->GetBody()->GetLinearVelocityFromWorldPoint(point);
     sample.frictionA = contact->GetFixtureA()->GetFriction();
     sample.frictionB = contact->GetFixtureB()->GetFriction();
+    sample.contactFriction = tracked.frictionSet ? contact->GetFriction() : -1.0f;
     return sample;
 }
 
@@ -269,7 +275,7 @@ void Emitter::Gather(RuleContext& context, std::uint32_t contactIndex)
     for (int i = 0; i < pointCount; ++i)
     {
         Sample sample;
-        sample.sample = SampleAt(contact, manifold.points[i], manifold.normal);
+        sample.sample = SampleAt(tracked, manifold.points[i], manifold.normal);
         sample.sample.normalForce = tracked.normalImpulse[i] / context.dt;
         sample.ownIntensity = ComputeIntensity(sample.sample, rule.intensity);
         if (!Finite(sample.sample) || !std::isfinite(sample.ownIntensity))
@@ -489,7 +495,7 @@ void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
     const int count = Budgeted(burst, context.stats);
     if (count > 0)
     {
-        const ContactSample sample = SampleAt(tracked.contact, tracked.approachPoint, tracked.approachNormal);
+        const ContactSample sample = SampleAt(tracked, tracked.approachPoint, tracked.approachNormal);
         if (!Finite(sample))
         {
             context.stats.nonFiniteSamples += 1; // a body's velocity went non-finite since it touched

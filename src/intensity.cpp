@@ -42,8 +42,10 @@ float RelativeSpeed(SpeedMode mode, const ContactSample& sample)
 float ComputeIntensity(const ContactSample& sample, const IntensityModel& model)
 {
     float pressure = 1.0f + model.impulseWeight * std::max(sample.normalForce, 0.0f);
-    return RelativeSpeed(model.speed, sample) *
-           MixFriction(model.friction, sample.frictionA, sample.frictionB) * pressure;
+    const float friction = sample.contactFriction >= 0.0f
+                               ? sample.contactFriction
+                               : MixFriction(model.friction, sample.frictionA, sample.frictionB);
+    return RelativeSpeed(model.speed, sample) * friction * pressure;
 }
 
 } // namespace cfx

@@ -19,7 +19,8 @@ namespace cfx
 /// without a `material` property get the tutorial's guesses as assignments: steel on bodies heavier than 3
 /// kg, concrete on static fixtures with friction > 0.5, dirt on static ones with friction < 0.5, rubber on
 /// other dynamic bodies heavier than 0.4 kg. Where it still differs from the tutorial's own code: a contact
-/// the application disabled in PreSolve emits nothing (the tutorial's loop only looks at the point count);
+/// the application disabled in PreSolve emits nothing (the tutorial's loop only looks at the point count),
+/// and one whose friction or tangent speed it set there emits by those (the tutorial reads the fixtures');
 /// particles are drawn in contactfx's style (docs/rendering.md), not as the tutorial's 8-pixel points.
 EffectsConfig TutorialPreset();
 

@@ -167,6 +167,75 @@ TEST(Emission, SparksAreThrownInTheMovingSurfacesFrame)
     EXPECT_EQ(TutorialPreset().particleTypes[0].velocityFrame, VelocityFrame::world);
 }
 
+// A trial's game made ice by setting its contacts' friction to 0 in PreSolve: the block slid on without
+// slowing, yet threw 238 sparks a second, more than on plain concrete (the emission mixed the fixtures'
+// frictions). A conveyor belt (b2Contact::SetTangentSpeed) carrying a block at its own speed is no slide at
+// all. The emission now reads what Box2D's solver uses: the friction the application set on the contact,
+// and the belt's tangent speed as a motion of its surface.
+TEST(Emission, AContactsOwnFrictionAndTangentSpeedAreWhatTheSparksFollow)
+{
+    class Surface final : public b2ContactListener
+    {
+    public:
+        void PreSolve(b2Contact* contact, const b2Manifold*) override
+        {
+            if (friction >= 0.0f)
+            {
+                contact->SetFriction(friction);
+            }
+            // The ground is fixture A or B: the belt moves its surface along +x either way.
+            const bool groundIsA = contact->GetFixtureA()->GetBody()->GetType() == b2_staticBody;
+            b2WorldManifold manifold;
+            contact->GetWorldManifold(&manifold);
+            const float along = b2Cross(manifold.normal, 1.0f).x; // the tangent's x, +-1 on flat ground
+            contact->SetTangentSpeed((groundIsA ? 1.0f : -1.0f) * belt * along);
+        }
+        float friction = -1.0f; // < 0: left as mixed
+        float belt = 0.0f;      // m/s along +x
+    };
+    // Sparks of a steel block held at `speed` (or left to the belt when `held` is false) for 2 s.
+    const auto sparks = [](float friction, float belt, float speed, bool held)
+    {
+        Surface surface;
+        surface.friction = friction;
+        surface.belt = belt;
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        box->SetLinearVelocity(b2Vec2(speed, 0.0f));
+        Effects& fx = scene.Attach(DefaultPreset(), 1, &surface);
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        for (int i = 0; i < 120; ++i)
+        {
+            scene.world->Step(1.0f / 60.0f, 8, 3);
+            if (held)
+            {
+                box->SetLinearVelocity(b2Vec2(speed, box->GetLinearVelocity().y));
+                box->SetAngularVelocity(0.0f);
+            }
+            fx.Step(1.0f / 60.0f);
+        }
+        return std::pair{scene.Spawned("sparks"), box->GetLinearVelocity().x};
+    };
+    const auto [concrete, concreteSpeed] = sparks(-1.0f, 0.0f, 6.0f, true);
+    ASSERT_GT(concrete, 200u);
+    // Ice: no friction, no sparks, and nothing slows the block.
+    const auto [ice, iceSpeed] = sparks(0.0f, 0.0f, 6.0f, false);
+    EXPECT_EQ(ice, 0u);
+    EXPECT_FLOAT_EQ(iceSpeed, 6.0f);
+    // A contact made rougher than its fixtures' mix (0.632; 0.9 keeps the 1 m block from tipping): an
+    // intensity of 6 * 0.9 * 1.2 instead of 6 * 0.632 * 1.2 above the threshold of 1, 438 sparks a second
+    // instead of 284.
+    EXPECT_GT(sparks(0.9f, 0.0f, 6.0f, true).first, concrete + concrete / 3);
+    // Carried by a belt at 6 m/s, the block does not slide over it: nothing. Held still on it, it slides at
+    // 6 m/s over the belt: as many as on still concrete at 6 m/s.
+    const auto [carried, carriedSpeed] = sparks(-1.0f, 6.0f, 6.0f, false);
+    EXPECT_NEAR(carriedSpeed, 6.0f, 0.01f) << "the belt carries it";
+    EXPECT_EQ(carried, 0u);
+    EXPECT_EQ(sparks(-1.0f, 6.0f, 0.0f, true).first, concrete);
+}
+
 TEST(Emission, RateDoesNotDependOnTheStepRate)
 {
     const std::uint64_t at60 = SlideBox(DefaultPreset(), 4.0f, 60.0f);
