@@ -187,12 +187,12 @@ void DebrisBenchScene::Step()
 
 DebrisBenchScene::StepSeconds DebrisBenchScene::TimedStep()
 {
-    using Clock = std::chrono::steady_clock;
-    const Clock::time_point start = Clock::now();
+    using StepClock = std::chrono::steady_clock;
+    const StepClock::time_point start = StepClock::now();
     StepWorld();
-    const Clock::time_point worldDone = Clock::now();
+    const StepClock::time_point worldDone = StepClock::now();
     StepEffects();
-    const Clock::time_point end = Clock::now();
+    const StepClock::time_point end = StepClock::now();
     Drop();
     return StepSeconds{std::chrono::duration<double>(worldDone - start).count(),
                        std::chrono::duration<double>(end - worldDone).count()};

@@ -153,8 +153,8 @@ private:
 bool IsSane(const b2Body& body)
 {
     const b2Transform& xf = body.GetTransform();
-    return Sane(xf.p) & Sane(b2Vec2(xf.q.c, xf.q.s)) & Sane(body.GetWorldCenter()) &
-           Sane(body.GetLinearVelocity()) & Sane(b2Vec2(body.GetAngularVelocity(), 0.0f));
+    const bool pose = Sane(xf.p) && Sane(b2Vec2(xf.q.c, xf.q.s)) && Sane(body.GetWorldCenter());
+    return pose && Sane(body.GetLinearVelocity()) && Sane(b2Vec2(body.GetAngularVelocity(), 0.0f));
 }
 
 // Adds what the static cache builds from `body` (static, enabled) to `signature`. Returns false for a body
@@ -266,14 +266,15 @@ namespace
 // Grid cells a moving shape is listed in, on average at most (the cells grow until it holds).
 constexpr std::size_t kMovingItemsPerBox = 8;
 
-// Static segments longer than kPieceLength (m) are swept as pieces of that length, at most kMaxPieces of
-// them (longer pieces beyond): a sweep measures a particle from a segment's first end, and a float's spacing
-// there limits its precision (1 mm particles raining near the middle of a 50 km edge fell through it). Near
-// a piece's last end the rounding of its ends, its normal and the particle's offset add up to a few float
-// spacings of its length L: the guarantees hold while the radius is at least 4 of them (docs/particles.md).
-// The cap bounds the cache: a file of 999 edges of 2,000 km each made 7.8 million pieces.
+// Static segments longer than kPieceLength (m) are swept as pieces of that length, at most kMaxSegmentPieces
+// of them (longer pieces beyond): a sweep measures a particle from a segment's first end, and a float's
+// spacing there limits its precision (1 mm particles raining near the middle of a 50 km edge fell through
+// it). Near a piece's last end the rounding of its ends, its normal and the particle's offset add up to a few
+// float spacings of its length L: the guarantees hold while the radius is at least 4 of them
+// (docs/particles.md). The cap bounds the cache: a file of 999 edges of 2,000 km each made 7.8 million
+// pieces.
 constexpr double kPieceLength = 256.0;
-constexpr double kMaxPieces = 64.0;
+constexpr double kMaxSegmentPieces = 64.0;
 } // namespace
 
 void WorldGeometry::Scan(b2World& world, const BodyFilter* ignore, float dt, StaticWatch watch)
@@ -482,9 +483,9 @@ void WorldGeometry::BuildStatic(b2World& world)
                     const double dy = static_cast<double>(v2.y) - v1.y;
                     // Bounded before the conversion (an edge of 1e12 m overflowed an int; NaN: one piece).
                     const double wanted = std::ceil(std::hypot(dx, dy) / kPieceLength);
-                    const int pieces = wanted > kMaxPieces ? static_cast<int>(kMaxPieces)
-                                       : wanted > 1.0      ? static_cast<int>(wanted)
-                                                           : 1;
+                    const int pieces = wanted > kMaxSegmentPieces ? static_cast<int>(kMaxSegmentPieces)
+                                       : wanted > 1.0             ? static_cast<int>(wanted)
+                                                                  : 1;
                     b2Vec2 from = v1;
                     for (int piece = 1; piece <= pieces; ++piece)
                     {

@@ -115,7 +115,9 @@ inline constexpr float kMaxCoordinate = 1.0e7f;
 /// Whether both components are finite and within kMaxCoordinate; not-a-number fails. No branch.
 inline bool Sane(b2Vec2 v)
 {
-    return (std::abs(v.x) <= kMaxCoordinate) & (std::abs(v.y) <= kMaxCoordinate);
+    const bool x = std::abs(v.x) <= kMaxCoordinate; // locals: `&` of two calls reads as a slip of `&&`
+    const bool y = std::abs(v.y) <= kMaxCoordinate;
+    return x & y;
 }
 
 /// What a bound on moving geometry is grown by (m) so that rounding in the body-frame sweeps, whose

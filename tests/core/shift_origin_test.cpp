@@ -218,7 +218,7 @@ TEST(ShiftOrigin, BetweenTheWorldStepAndTheEffectsStepIsAsGoodAsBeforeTheWorldSt
         }
     };
     Slide before, after;
-    constexpr float kDt = 1.0f / 60.0f;
+    constexpr float kStepTime = 1.0f / 60.0f;
     float farthest = 0.0f;
     std::uint64_t hitsBefore = 0, hitsAfter = 0;
     for (int step = 0; step < 120; ++step)
@@ -228,14 +228,14 @@ TEST(ShiftOrigin, BetweenTheWorldStepAndTheEffectsStepIsAsGoodAsBeforeTheWorldSt
         {
             before.Shift();
         }
-        before.world->Step(kDt, 8, 3);
-        after.world->Step(kDt, 8, 3);
+        before.world->Step(kStepTime, 8, 3);
+        after.world->Step(kStepTime, 8, 3);
         if (shift)
         {
             after.Shift();
         }
-        before.effects->Step(kDt);
-        after.effects->Step(kDt);
+        before.effects->Step(kStepTime);
+        after.effects->Step(kStepTime);
         const ParticleView a = before.effects->Particles();
         const ParticleView b = after.effects->Particles();
         ASSERT_EQ(a.count, b.count) << "step " << step;

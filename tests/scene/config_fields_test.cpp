@@ -383,8 +383,12 @@ TEST(ConfigFields, EveryNumberIsValidatedAgainstItsRange)
                         }
                     },
                     field.member);
-                for (auto [number, valid] : cases)
+                for (const auto& [givenNumber, givenValid] : cases)
                 {
+                    // Copies: a lambda may not capture a structured binding before C++20 as clang 14 reads
+                    // it.
+                    const float number = givenNumber;
+                    const bool valid = givenValid;
                     EffectsConfig config = BaseConfig();
                     S& value = Slot<S>::In(config);
                     std::string at = path;

@@ -94,6 +94,8 @@ public:
     VideoSink(std::filesystem::path file, OutputKind kind, int width, int height, double fps,
               std::filesystem::path temporary = {});
     ~VideoSink() override;
+    VideoSink(const VideoSink&) = delete; // owns the encoder's pipe
+    VideoSink& operator=(const VideoSink&) = delete;
     /// Throws InputError naming the file when ffmpeg stopped taking frames.
     void Write(const CairoRenderer& frame) override;
     /// Waits for ffmpeg, then checks the video with ffprobe: it must hold every frame written and last
