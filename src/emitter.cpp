@@ -97,6 +97,10 @@ bool Asleep(const b2Body* body)
     return body->GetType() != b2_staticBody && !body->IsAwake();
 }
 
+// m/s: a particle's motion along the surface, relative to the other body's footprint, slower than this
+// tells no side to start on (SpawnQuery::leaving).
+constexpr float kLeavingSpeed = 0.05f;
+
 // The sample of a tracked contact at a world point, after the step, as Box2D solved it: with the friction
 // the application set on the contact (TrackedContact::frictionSet), and with its tangent speed (a conveyor
 // belt: b2Contact::SetTangentSpeed) as a motion of fixture A's surface along the tangent, which is how the
@@ -553,7 +557,13 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.surfaceChild = surfaceIsA ? contact->GetChildIndexA() : contact->GetChildIndexB();
     query.point = sample.point;
     query.normal = surfaceNormal;
-    query.leaving = leaving.LengthSquared() > 0.0f ? leaving : slip;
+    // Nothing carried along the surface and no slip to speak of (a flat landing, where rounding alone
+    // picked a side, often the far one across the whole body): outward from under the other body, from its
+    // centre through the contact point.
+    query.leaving = leaving.LengthSquared() > kLeavingSpeed * kLeavingSpeed ? leaving
+                    : slip.LengthSquared() > kLeavingSpeed * kLeavingSpeed
+                        ? slip
+                        : sample.point - other.GetBody()->GetWorldCenter();
     query.otherBody = other.GetBody();
     query.radius = type.radius;
     // The tutorial's drop starts inside a wheel its particles do not collide with, as the tutorial does.

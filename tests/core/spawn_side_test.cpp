@@ -208,4 +208,53 @@ TEST(SpawnSide, AFaceHiddenUnderAnotherFixtureIsNotReached)
     }
 }
 
+// A trial dropped boxes flat on concrete: with no slip to tell a side, rounding picked one, and the burst
+// started past the far edge (0.68 m from the corner that struck, for a 0.5 m box; 4.1 m for a 4 m slab), on
+// a side that changed with gravity. With no motion along the surface, the walk goes outward from under the
+// body, from the corner that struck.
+TEST(SpawnSide, AFlatLandingsBurstStartsBesideTheCornerThatStruck)
+{
+    for (const float width : {0.5f, 2.0f, 4.0f})
+    {
+        for (const float gravity : {10.0f, 20.0f})
+        {
+            SCOPED_TRACE(testing::Message() << width << " m wide, gravity " << gravity);
+            TestWorld scene(b2Vec2(0.0f, -gravity));
+            b2Body* ground = scene.CreateGround();
+            b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.25f + 2.0f), 0.5f * width, 0.25f, 0.5f);
+            EffectsConfig config = DefaultPreset();
+            ParticleTypeDef& sparks = config.particleTypes[config.FindParticleType("sparks").index];
+            sparks.spread = sparks.normalSpeed = sparks.gravityScale = sparks.drag = 0.0f;
+            sparks.collide = false;
+            Effects& fx = scene.Attach(config);
+            fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+            fx.SetMaterial(box, fx.FindMaterial("steel"));
+            int bursts = 0;
+            for (int i = 0; i < 90; ++i)
+            {
+                scene.Step();
+                for (const EffectEvent& event : fx.Events())
+                {
+                    if (event.type != EffectEventType::impact)
+                    {
+                        continue;
+                    }
+                    ++bursts;
+                    const ParticleView view = fx.Particles();
+                    const std::uint32_t spawned = fx.Stats().rules[0].spawnedLastStep;
+                    ASSERT_GT(spawned, 0u);
+                    for (std::uint32_t k = view.count - spawned; k < view.count; ++k)
+                    {
+                        const float x = view.positionX[view.Slot(k)];
+                        // Beside the corner, outside the box: within 5 cm of its side, on the corner's side.
+                        EXPECT_LT(std::abs(x - event.point.x), 0.05f) << "corner at " << event.point.x;
+                        EXPECT_GT(std::abs(x), 0.5f * width) << "outside the box";
+                    }
+                }
+            }
+            EXPECT_EQ(bursts, 1);
+        }
+    }
+}
+
 } // namespace cfx::test
