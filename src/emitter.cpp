@@ -227,6 +227,8 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
         {
             UpdatePair(context, slot);
         }
+        ruleStats.intensityMax = std::max(ruleStats.intensityMax, ruleStats.intensityMaxLastStep);
+        ruleStats.approachMax = std::max(ruleStats.approachMax, ruleStats.approachMaxLastStep);
     }
 }
 
@@ -493,10 +495,8 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
 
 void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
 {
-    const float burst =
-        std::min(context.rule.burstMax,
-                 context.rule.burstPerSpeed * (tracked.approachSpeed - context.rule.BurstFrom()));
-    const int count = Budgeted(burst, context.stats);
+    const int count =
+        Budgeted(static_cast<float>(context.rule.BurstSize(tracked.approachSpeed)), context.stats);
     if (count > 0)
     {
         const ContactSample sample = SampleAt(tracked, tracked.approachPoint, tracked.approachNormal);
@@ -583,6 +583,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     {
         // No free start near the contact (a pile, a crevice): never inside a solid, so not at all.
         context.stats.spawnRejected += static_cast<std::uint64_t>(count);
+        context.ruleStats.spawnRejected += static_cast<std::uint64_t>(count);
         return;
     }
     // The audit: Box2D's own overlap test on the particle's actual disc, not the placement's search.

@@ -51,9 +51,16 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
         const RuleDef& rule = config.rules[i];
-        std::printf("  %-18s -> %-8s at most %u contacts, %llu particles\n",
-                    (rule.materialA + "+" + rule.materialB).c_str(), rule.particleType.c_str(),
-                    stats.rules[i].contactsMax, static_cast<unsigned long long>(stats.rules[i].spawned));
+        const RuleStats& counts = stats.rules[i];
+        std::printf("  %-18s -> %-8s at most %u contacts, %llu particles", PairName(rule).c_str(),
+                    rule.particleType.c_str(), counts.contactsMax,
+                    static_cast<unsigned long long>(counts.spawned));
+        if (counts.spawnRejected > 0) // no free start near the contact: a pile, a crevice, a thin pane
+        {
+            std::printf(", %llu not started (no free place)",
+                        static_cast<unsigned long long>(counts.spawnRejected));
+        }
+        std::printf("\n");
     }
     std::printf("  live particles at most %u (cap %u), recycled %llu, started inside solid %llu\n",
                 stats.liveMax, config.budget.capacity, static_cast<unsigned long long>(stats.recycled),

@@ -126,17 +126,11 @@ void Simulation::Step()
     ++m_steps;
 }
 
-namespace
-{
-
-// "A+B" with the names sorted, as the stats file names rules.
 std::string PairName(const RuleDef& rule)
 {
     return rule.materialA < rule.materialB ? rule.materialA + "+" + rule.materialB
                                            : rule.materialB + "+" + rule.materialA;
 }
-
-} // namespace
 
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz)
 {
@@ -212,9 +206,10 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     Json rules = Json::object();
     for (const auto& [name, index] : names)
     {
-        rules[name] = Json{{"contacts_max", stats.rules[index].contactsMax},
-                           {"spawned", stats.rules[index].spawned},
-                           {"impacts", stats.rules[index].impacts}};
+        const RuleStats& rule = stats.rules[index];
+        rules[name] = Json{{"contacts_max", rule.contactsMax},     {"spawned", rule.spawned},
+                           {"spawn_rejected", rule.spawnRejected}, {"impacts", rule.impacts},
+                           {"intensity_max", rule.intensityMax},   {"approach_max", rule.approachMax}};
     }
     root["rules"] = rules;
     root["live_max"] = stats.liveMax;

@@ -92,6 +92,16 @@ struct RuleDef
     /// The approach speed (m/s) an impact's burst counts from: the higher of impactThreshold and
     /// burstThreshold. An impact bursts min(burstMax, burstPerSpeed * (approach speed - this)) particles.
     float BurstFrom() const { return impactThreshold > burstThreshold ? impactThreshold : burstThreshold; }
+    /// The particles an impact at `approachSpeed` (m/s) bursts: the whole part of min(burstMax,
+    /// burstPerSpeed * (approachSpeed - BurstFrom())), 0 below 1 (before the pool's capacity and the
+    /// search for a free start, which may leave fewer).
+    int BurstSize(float approachSpeed) const
+    {
+        const float burst = burstPerSpeed * (approachSpeed - BurstFrom());
+        const float capped = burst < burstMax ? burst : burstMax;
+        // Validated rules give at most 1e5; beyond 1e9 (a rule that skipped validation) it is held at 1e9.
+        return !(capped >= 1.0f) ? 0 : capped >= 1.0e9f ? 1000000000 : static_cast<int>(capped);
+    }
 
     bool operator==(const RuleDef&) const = default;
 };

@@ -22,6 +22,11 @@ struct RuleStats
     float approachMaxLastStep = 0.0f;
     std::uint64_t impacts = 0;         ///< impact events (EffectEventType::impact) made in all
     std::uint32_t impactsLastStep = 0; ///< impact events made in the last step
+    /// Particles of the rule (its scrapes and bursts) not spawned because no start outside every solid
+    /// existed near their contact (EffectsStats::spawnRejected, which sums them).
+    std::uint64_t spawnRejected = 0;
+    float intensityMax = 0.0f; ///< the largest intensityMaxLastStep since creation
+    float approachMax = 0.0f;  ///< m/s: the largest approachMaxLastStep since creation
 };
 
 /// Counters since creation.

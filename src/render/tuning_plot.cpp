@@ -261,7 +261,9 @@ void DrawImpactStrip(cairo_t* cr, const Panel& p, const std::vector<Column>& col
         {
             continue;
         }
-        const bool burst = column.totals.impacts > 0 && bursts && column.totals.approach > burstFrom;
+        // Amber only where the impact asked for a particle at least (3.1 m/s with a burstPerSpeed of 8
+        // from 3 m/s asks for none).
+        const bool burst = column.totals.impacts > 0 && def.BurstSize(column.totals.approach) > 0;
         SetColor(cr, burst ? kBurst : column.totals.impacts > 0 ? kImpact : kSoftTouch);
         const double x0 = xAt(column.start);
         const double x1 = std::max(xAt(column.start + column.duration) - 1.0, x0 + 1.0);

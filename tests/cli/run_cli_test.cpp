@@ -63,22 +63,39 @@ TEST(CliRun, StatsCountEachRulesImpactsAsTheEventsFileLists)
     ASSERT_EQ(result.exitCode, 0) << result.output;
     const nlohmann::json stats = nlohmann::json::parse(FileText(dir / "stats.json"));
     std::map<std::string, std::uint64_t> listed;
+    std::map<std::string, double> fastest, strongest;
     std::istringstream lines(FileText(dir / "events.jsonl"));
     for (std::string line; std::getline(lines, line);)
     {
         const nlohmann::json event = nlohmann::json::parse(line);
+        const std::string pair = event["pair"].get<std::string>();
         if (event["type"] == "impact")
         {
-            ++listed[event["pair"].get<std::string>()];
+            ++listed[pair];
+            fastest[pair] = std::max(fastest[pair], event["approach_speed"].get<double>());
+        }
+        else if (event.contains("intensity") && event["intensity"].is_number()) // scrapes
+        {
+            strongest[pair] = std::max(strongest[pair], event["intensity"].get<double>());
         }
     }
     std::uint64_t total = 0;
+    std::uint64_t rejected = 0;
     for (const auto& [rule, counts] : stats["rules"].items())
     {
         EXPECT_EQ(counts["impacts"].get<std::uint64_t>(), listed[rule]) << rule;
         total += counts["impacts"].get<std::uint64_t>();
+        rejected += counts["spawn_rejected"].get<std::uint64_t>();
+        // The fastest new touch is the fastest impact when there was one (the others were slower).
+        if (listed[rule] > 0)
+        {
+            EXPECT_EQ(counts["approach_max"].get<double>(), fastest[rule]) << rule;
+        }
+        // A scrape reports its pair's intensity, never above the largest a step saw.
+        EXPECT_GE(counts["intensity_max"].get<double>(), strongest[rule]) << rule;
     }
     EXPECT_GT(total, 0u) << "the demo's tyres land on the concrete in its first 8 s";
+    EXPECT_EQ(rejected, stats["spawn_rejected"].get<std::uint64_t>()) << "the rules' rejections add up";
 }
 
 TEST(CliRun, SameCommandTwiceWritesByteIdenticalStats)

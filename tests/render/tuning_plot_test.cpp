@@ -292,6 +292,11 @@ TEST(TuningPlot, TheImpactStripTellsSoftTouchesImpactsAndBurstsApart)
     EXPECT_EQ(columnsWith(withBursts, 400, 530, kWhite[0], kWhite[1], kWhite[2]), 0);
     EXPECT_GT(columnsWith(withoutBursts, 400, 530, kWhite[0], kWhite[1], kWhite[2]), 100);
     EXPECT_EQ(columnsWith(withoutBursts, 400, 530, r, g, b), 0);
+    // An impact that asks for no whole particle (6 m/s, 0.2 a m/s from 2 m/s: 0.8) made no burst: white (a
+    // trial read an amber bar as a burst that never came).
+    const Picture tooFew = plot(0.2f);
+    EXPECT_GT(columnsWith(tooFew, 400, 530, kWhite[0], kWhite[1], kWhite[2]), 100);
+    EXPECT_EQ(columnsWith(tooFew, 400, 530, r, g, b), 0);
     // A threshold far above every touch (1e4 m/s; the trial's strips were empty, bars 0 px tall at a scale
     // of 17,250 m/s): the axis follows the touches, and they show.
     const Picture huge = plot(0.0f, 1.0e4f);
