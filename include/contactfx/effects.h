@@ -19,7 +19,8 @@
 // (EffectsDef or the setters, never b2World's setters while it lives) and it forwards every callback to
 // them. A contact listener already set on the world (b2World::SetContactListener before Effects) is kept
 // and forwarded to when EffectsDef names none. A destruction listener set on the world before cannot be
-// (Box2D 2.4 has no way to read it): it is replaced, so give it through EffectsDef::destructionListener.
+// (Box2D 2.4 has no way to read it): it is replaced, and not put back by the destructor either, so give it
+// through EffectsDef::destructionListener (or set it again on the world after the Effects is gone).
 // The destructor first destroys the bodies of its body-backed particles (ParticleBackend::body, the
 // tutorial preset), their fixtures' goodbyes forwarded as in a step (the application's listener may call
 // into the Effects then; Step does nothing then), and then puts the application's listeners back: the
