@@ -89,6 +89,25 @@ struct TestWorld
         return *effects;
     }
 
+    /// Attach(config), then steel on `box` and concrete on `ground`: the scene of most emission tests.
+    Effects& AttachSteelOnConcrete(EffectsConfig config, b2Body* ground, b2Body* box,
+                                   b2ContactListener* listener = nullptr)
+    {
+        Effects& fx = Attach(std::move(config), 1, listener);
+        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
+        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        return fx;
+    }
+
+    /// `config`'s sparks made to keep their start: no spread, normal speed, gravity or drag, no collision.
+    static ParticleTypeDef& StillSparks(EffectsConfig& config)
+    {
+        ParticleTypeDef& sparks = config.particleTypes[config.FindParticleType("sparks").index];
+        sparks.spread = sparks.normalSpeed = sparks.gravityScale = sparks.drag = 0.0f;
+        sparks.collide = false;
+        return sparks;
+    }
+
     MaterialId Material(const char* name) const { return effects->FindMaterial(name); }
 
     std::uint64_t Spawned(const char* type) const

@@ -81,12 +81,8 @@ TEST(Emission, ManifoldPointsShareOneRate)
     b2Body* ground = scene.CreateGround();
     b2Body* box = scene.CreateBox(b2Vec2(-10.0f, 0.5f), 0.5f, 0.5f, 0.5f);
     EffectsConfig still = DefaultPreset();
-    ParticleTypeDef& sparks = still.particleTypes[still.FindParticleType("sparks").index];
-    sparks.spread = sparks.normalSpeed = sparks.slipFactor = sparks.gravityScale = 0.0f;
-    sparks.collide = false;
-    Effects& fx = scene.Attach(still);
-    fx.SetMaterial(ground, fx.FindMaterial("concrete"));
-    fx.SetMaterial(box, fx.FindMaterial("steel"));
+    TestWorld::StillSparks(still).slipFactor = 0.0f;
+    Effects& fx = scene.AttachSteelOnConcrete(still, ground, box);
     int rear = 0;
     int front = 0;
     for (int i = 0; i < 120; ++i)
@@ -124,13 +120,8 @@ TEST(Emission, SparksAreThrownInTheMovingSurfacesFrame)
         ground->SetLinearVelocity(b2Vec2(platform, 0.0f));
         b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
         EffectsConfig config = DefaultPreset();
-        ParticleTypeDef& sparks = config.particleTypes[config.FindParticleType("sparks").index];
-        sparks.spread = sparks.normalSpeed = sparks.gravityScale = sparks.drag = 0.0f;
-        sparks.collide = false;
-        sparks.velocityFrame = frame;
-        Effects& fx = scene.Attach(config);
-        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
-        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        TestWorld::StillSparks(config).velocityFrame = frame;
+        Effects& fx = scene.AttachSteelOnConcrete(config, ground, box);
         double sum = 0.0;
         float low = 1e9f, high = -1e9f;
         std::uint32_t count = 0;
@@ -203,9 +194,7 @@ TEST(Emission, AContactsOwnFrictionAndTangentSpeedAreWhatTheSparksFollow)
         b2Body* ground = scene.CreateGround();
         b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
         box->SetLinearVelocity(b2Vec2(speed, 0.0f));
-        Effects& fx = scene.Attach(DefaultPreset(), 1, &surface);
-        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
-        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        Effects& fx = scene.AttachSteelOnConcrete(DefaultPreset(), ground, box, &surface);
         for (int i = 0; i < 120; ++i)
         {
             scene.world->Step(1.0f / 60.0f, 8, 3);
@@ -346,9 +335,7 @@ TEST(Emission, ARulesImpactsBurstItsBurstTypeWhileItsScrapesEmitItsOwn)
         rule.burstPerSpeed = 10.0f;
         rule.burstMax = 1000.0f;
         rule.burstParticleType = burstType;
-        Effects& fx = scene.Attach(std::move(config));
-        fx.SetMaterial(ground, fx.FindMaterial("concrete"));
-        fx.SetMaterial(box, fx.FindMaterial("steel"));
+        Effects& fx = scene.AttachSteelOnConcrete(std::move(config), ground, box);
         float approach = 0.0f;
         std::uint64_t sparksAfterLanding = 0;
         for (int i = 0; i < 60; ++i)

@@ -223,12 +223,8 @@ TEST(SpawnSide, AFlatLandingsBurstStartsBesideTheCornerThatStruck)
             b2Body* ground = scene.CreateGround();
             b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.25f + 2.0f), 0.5f * width, 0.25f, 0.5f);
             EffectsConfig config = DefaultPreset();
-            ParticleTypeDef& sparks = config.particleTypes[config.FindParticleType("sparks").index];
-            sparks.spread = sparks.normalSpeed = sparks.gravityScale = sparks.drag = 0.0f;
-            sparks.collide = false;
-            Effects& fx = scene.Attach(config);
-            fx.SetMaterial(ground, fx.FindMaterial("concrete"));
-            fx.SetMaterial(box, fx.FindMaterial("steel"));
+            TestWorld::StillSparks(config);
+            Effects& fx = scene.AttachSteelOnConcrete(config, ground, box);
             int bursts = 0;
             for (int i = 0; i < 90; ++i)
             {
