@@ -184,6 +184,21 @@ TEST(SceneMaterials, AnUnknownMaterialsMessageIsOneLineOfBoundedLength)
     EXPECT_NE(problems[0].message.find(", m19 and 5 more)"), std::string::npos) << problems[0].message;
 }
 
+// A trial misspelt the property on one fixture ("materal"): it silently got no material, even under
+// validate --strict, and the scene lost 80 % of its dust.
+TEST(SceneMaterials, AMisspeltMaterialPropertyIsAnError)
+{
+    const std::string bodies =
+        R"({"type": 2, "position": 0, "awake": true, "fixture": [{"density": 1, "customProperties": [{"name":
+            "materal", "string": "steel"}, {"name": "colour", "string": "red"}], "circle": {"radius": 1}}]})";
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    const std::vector<Diagnostic> problems = ResolveErrors(scene, TutorialPreset());
+    ASSERT_EQ(problems.size(), 1u) << test::Dump(problems) << "another property is no error";
+    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].name",
+                                    "a custom property named \"materal\", did you mean `material`?"))
+        << test::Dump(problems);
+}
+
 TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
 {
     const std::string bodies =
@@ -192,8 +207,9 @@ TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
             "x", "int": 1}, {"name": "material", "int": 4}], "circle": {"radius": 1}}]})";
     const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
     const std::vector<Diagnostic> problems = ResolveErrors(scene, TutorialPreset());
-    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",
-                                    "unknown material \"glass\" (the effects config has: steel, rubber"))
+    EXPECT_TRUE(
+        test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",
+                            "unknown material \"glass\" (the effects config \"tutorial\" has: steel, rubber"))
         << test::Dump(problems);
     EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].fixture[1].customProperties[1]",
                                     "expected the material as a string property, found int property 4"))
