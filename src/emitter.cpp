@@ -132,14 +132,12 @@ struct Emitter::RuleContext
     ParticleBodyFilter particleBodies; // spawn point tests ignore body-backed particles' bodies
     EffectsStats& stats;
     const RuleDef& rule;
-    const ParticleTypeDef& type;
-    ParticleTypeId typeId;
+    std::span<const ParticleTypeDef> types; // the config's, by ParticleTypeId
+    ParticleTypeId typeId;                  // what the rule's scrapes emit
+    ParticleTypeId burstTypeId;             // what its impacts burst: burstParticleType, else typeId
     RuleStats& ruleStats;
     std::span<const TrackedContact> contacts;
     float dt;
-    /// What the rule's impacts burst: RuleDef::burstParticleType, else the rule's own type.
-    const ParticleTypeDef& burstType;
-    ParticleTypeId burstTypeId;
 };
 
 Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStarts)
@@ -185,8 +183,6 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
     {
         const RuleId ruleId{static_cast<std::uint16_t>(ruleIndex)};
         const RuleDef& rule = config.rules[ruleIndex];
-        const ParticleTypeId typeId = m_ruleTypes[ruleIndex];
-        const ParticleTypeId burstTypeId = m_burstTypes[ruleIndex];
         RuleStats& ruleStats = stats.rules[ruleIndex];
         std::span<const TrackedContact> contacts = tracker.Contacts(ruleId);
         RuleContext context{world,
@@ -196,13 +192,12 @@ void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTra
                             ParticleBodyFilter(particles),
                             stats,
                             rule,
-                            config.particleTypes[typeId.index],
-                            typeId,
+                            config.particleTypes,
+                            m_ruleTypes[ruleIndex],
+                            m_burstTypes[ruleIndex],
                             ruleStats,
                             contacts,
-                            dt,
-                            config.particleTypes[burstTypeId.index],
-                            burstTypeId};
+                            dt};
         ruleStats.contacts = static_cast<std::uint32_t>(contacts.size());
         ruleStats.contactsMax = std::max(ruleStats.contactsMax, ruleStats.contacts);
         ruleStats.spawnedLastStep = 0;
@@ -395,7 +390,7 @@ void Emitter::UpdatePair(RuleContext& context, std::uint32_t pairSlot)
             if (sample.ownIntensity > rule.threshold)
             {
                 SpawnParticles(context, context.contacts[sample.contact], sample.sample, sample.ownIntensity,
-                               1, context.type, context.typeId);
+                               1, context.typeId);
             }
         }
     }
@@ -488,7 +483,7 @@ void Emitter::EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairS
         if (share > 0)
         {
             SpawnParticles(context, context.contacts[sample.contact], sample.sample, intensity, share,
-                           context.type, context.typeId);
+                           context.typeId);
         }
     }
 }
@@ -505,13 +500,12 @@ void Emitter::Burst(RuleContext& context, const TrackedContact& tracked)
             context.stats.nonFiniteSamples += 1; // a body's velocity went non-finite since it touched
             return;
         }
-        SpawnParticles(context, tracked, sample, tracked.approachSpeed, count, context.burstType,
-                       context.burstTypeId);
+        SpawnParticles(context, tracked, sample, tracked.approachSpeed, count, context.burstTypeId);
     }
 }
 
 void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
-                             float intensity, int count, const ParticleTypeDef& type, ParticleTypeId typeId)
+                             float intensity, int count, ParticleTypeId typeId)
 {
     if (count > m_spawnBudget)
     {
@@ -524,6 +518,7 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     }
     m_spawnBudget -= count;
     const RuleDef& rule = context.rule;
+    const ParticleTypeDef& type = context.types[typeId.index];
     const b2Contact* contact = tracked.contact;
     const b2Fixture* fixtureA = contact->GetFixtureA();
     const b2Fixture* fixtureB = contact->GetFixtureB();

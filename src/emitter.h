@@ -122,10 +122,10 @@ private:
     int Budgeted(float owed, EffectsStats& stats) const;
     void EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity);
     void Burst(RuleContext& context, const TrackedContact& tracked);
-    /// Spawns `count` particles of `type` (`typeId`) at the sample: the rule's type for its scrapes, its
-    /// burst type for its impacts.
+    /// Spawns `count` particles of type `typeId` at the sample: the rule's type for its scrapes, its burst
+    /// type for its impacts.
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
-                        float intensity, int count, const ParticleTypeDef& type, ParticleTypeId typeId);
+                        float intensity, int count, ParticleTypeId typeId);
 
     Random m_random;
     bool m_auditStarts;
