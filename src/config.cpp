@@ -2,10 +2,12 @@
 
 #include "contactfx/config_fields.h"
 #include "float_text.h"
+#include "nearest_name.h"
 #include "quoted_text.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 #include <string_view>
@@ -128,6 +130,7 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
         else if (rule == TextRule::material && !config.FindMaterial(text).IsValid())
         {
             check.Fail(path, "unknown material " + detail::QuotedText(text) +
+                                 detail::DidYouMean(text, config.materials) +
                                  " (materials: " + detail::NameList(config.materials, "none") + ")");
         }
         else if (rule == TextRule::particleType && !config.FindParticleType(text).IsValid())
@@ -138,6 +141,7 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
                 types.push_back(type.name);
             }
             check.Fail(path, "unknown particle type " + detail::QuotedText(text) +
+                                 detail::DidYouMean(text, types) +
                                  " (particle types: " + detail::NameList(types, "none") + ")");
         }
         break;
@@ -222,8 +226,9 @@ void CheckFields(Checker& check, const std::string& at, const S& value, std::spa
     }
 }
 
-// Unordered material pairs seen so far in a list (rules, sound rules).
-using MaterialPairs = std::set<std::pair<std::string_view, std::string_view>>;
+// Unordered material pairs seen so far in a list (rules, sound rules), each with the index of its first
+// entry.
+using MaterialPairs = std::map<std::pair<std::string_view, std::string_view>, std::size_t>;
 
 // The unordered pair {a, b} as the key of MaterialPairs.
 std::pair<std::string_view, std::string_view> Unordered(std::string_view a, std::string_view b)
@@ -238,10 +243,20 @@ std::string PairName(std::string_view a, std::string_view b)
     return detail::EscapedText(first) + "+" + detail::EscapedText(second); // one line whatever the names
 }
 
-// PairName(a, b) when `seen` already has the unordered pair {a, b}, else "" (and the pair is added).
-std::string RepeatedPair(MaterialPairs& seen, std::string_view a, std::string_view b)
+// Notes entry `index` of `list` (its path, "rules") for the unordered pair {a, b}; when an earlier entry
+// has that pair, fails at entry `index` naming the pair and that entry, and returns true.
+bool NoteRepeatedPair(Checker& check, MaterialPairs& seen, std::string_view list, std::size_t index,
+                      std::string_view a, std::string_view b, std::string_view what)
 {
-    return seen.insert(Unordered(a, b)).second ? std::string() : PairName(a, b);
+    const auto [first, inserted] = seen.emplace(Unordered(a, b), index);
+    if (!inserted)
+    {
+        const std::string path = std::string(list) + "[";
+        check.Fail(path + std::to_string(index) + "]", "a second " + std::string(what) + " for the pair " +
+                                                           PairName(a, b) + " (the first is " + path +
+                                                           std::to_string(first->second) + "])");
+    }
+    return !inserted;
 }
 
 } // namespace
@@ -313,10 +328,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         const std::string at = "rules[" + std::to_string(i) + "]";
         const RuleDef& rule = config.rules[i];
         CheckFields(check, at, rule, RuleFields(), config);
-        if (const std::string pair = RepeatedPair(pairs, rule.materialA, rule.materialB); !pair.empty())
-        {
-            check.Fail(at, "a second rule for the pair " + pair);
-        }
+        NoteRepeatedPair(check, pairs, "rules", i, rule.materialA, rule.materialB, "rule");
     }
 
     for (std::size_t i = 0; i < config.assignments.size(); ++i)
@@ -346,15 +358,13 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         const std::string at = "sound.rules[" + std::to_string(i) + "]";
         const SoundRuleDef& rule = config.sound.rules[i];
         CheckFields(check, at, rule, SoundRuleFields(), config);
-        if (const std::string pair = RepeatedPair(soundPairs, rule.materialA, rule.materialB); !pair.empty())
-        {
-            check.Fail(at, "a second sound rule for the pair " + pair);
-        }
+        const bool repeated = NoteRepeatedPair(check, soundPairs, "sound.rules", i, rule.materialA,
+                                               rule.materialB, "sound rule");
         // Sound rules only tune the voices of a pair rule's events (docs/sound.md): without one, a typo in
         // a material name would silently do nothing. Unknown materials are reported above.
-        else if (config.FindMaterial(rule.materialA).IsValid() &&
-                 config.FindMaterial(rule.materialB).IsValid() &&
-                 !pairs.contains(Unordered(rule.materialA, rule.materialB)))
+        if (!repeated && config.FindMaterial(rule.materialA).IsValid() &&
+            config.FindMaterial(rule.materialB).IsValid() &&
+            !pairs.contains(Unordered(rule.materialA, rule.materialB)))
         {
             check.Fail(at, "no rule for the pair " + PairName(rule.materialA, rule.materialB) +
                                " in \"rules\": this sound rule would never apply");

@@ -193,7 +193,84 @@ template <typename S> void ReadField(const ObjectReader& reader, const Field<S>&
         field.member);
 }
 
-// Reports fields that no table knows, naming the nearest known one.
+// The top-level fields of an effects config.
+constexpr std::string_view kTopKeys[] = {"name",   "materials",   "particleTypes", "rules",
+                                         "budget", "assignments", "sound"};
+
+// Where each field of an effects config belongs: a section ("rules[]", "" for the top level) and a name.
+struct FieldPlace
+{
+    std::string_view section;
+    std::string_view name;
+};
+
+template <typename S>
+void AddPlaces(std::vector<FieldPlace>& places, std::string_view section, std::span<const Field<S>> fields)
+{
+    for (const Field<S>& field : fields)
+    {
+        places.push_back({section, field.name});
+    }
+}
+
+const std::vector<FieldPlace>& FieldPlaces()
+{
+    static const std::vector<FieldPlace> places = []
+    {
+        std::vector<FieldPlace> all;
+        for (std::string_view key : kTopKeys)
+        {
+            all.push_back({"", key});
+        }
+        AddPlaces(all, "particleTypes[]", ParticleTypeFields());
+        AddPlaces(all, "rules[]", RuleFields());
+        AddPlaces(all, "rules[].intensity", IntensityFields());
+        AddPlaces(all, "assignments[]", AssignmentFields());
+        AddPlaces(all, "budget", BudgetFields());
+        AddPlaces(all, "sound", SoundFields());
+        all.push_back({"sound", "rules"});
+        AddPlaces(all, "sound.rules[]", SoundRuleFields());
+        return all;
+    }();
+    return places;
+}
+
+// The section of an object's path: "rules[3].intensity" -> "rules[].intensity".
+std::string SectionOf(std::string_view path)
+{
+    std::string section;
+    bool inIndex = false;
+    for (char c : path)
+    {
+        inIndex = c == '[' || (inIndex && c != ']');
+        if (!inIndex || c == '[')
+        {
+            section += c;
+        }
+    }
+    return section;
+}
+
+// " (a field of particleTypes[])" when `key` is no field of the section of `path` but is one elsewhere
+// (a type's field written in its rule), naming every such section; empty otherwise.
+std::string ElsewhereNote(std::string_view key, std::string_view path)
+{
+    const std::string own = SectionOf(path);
+    std::string note;
+    for (const FieldPlace& place : FieldPlaces())
+    {
+        if (place.name != key || place.section == own)
+        {
+            continue;
+        }
+        note += note.empty() ? " (a field of " : " and of ";
+        note += place.section.empty() ? std::string_view("the top level") : place.section;
+    }
+    return note.empty() ? note : note + ")";
+}
+
+// Reports fields that no table knows, naming the section where a field of that name belongs, else the
+// nearest known one.
 void CheckKnownKeys(const Json& object, const std::string& path, std::span<const std::string_view> names,
                     DiagnosticList& diagnostics)
 {
@@ -201,8 +278,10 @@ void CheckKnownKeys(const Json& object, const std::string& path, std::span<const
     {
         if (std::find(names.begin(), names.end(), it.key()) == names.end())
         {
+            const std::string elsewhere = ElsewhereNote(it.key(), path);
             diagnostics.Add(scene_detail::JoinPath(path, it.key()),
-                            scene_detail::UnknownKeyMessage(it.key(), names, "field", ""));
+                            elsewhere.empty() ? scene_detail::UnknownKeyMessage(it.key(), names, "field", "")
+                                              : "unknown field here" + elsewhere);
         }
     }
 }
@@ -294,8 +373,6 @@ EffectsConfig ReadConfig(const Json& root, DiagnosticList& diagnostics)
         return config;
     }
     ObjectReader top(root, "", diagnostics);
-    static constexpr std::string_view kTopKeys[] = {"name",   "materials",   "particleTypes", "rules",
-                                                    "budget", "assignments", "sound"};
     CheckKnownKeys(root, "", kTopKeys, diagnostics);
     config.name = top.String("name");
 

@@ -7,6 +7,7 @@
 // one error that says so instead of a list of unknown keys.
 #pragma once
 
+#include "nearest_name.h"
 #include "scene/json_reader.h"
 
 #include <optional>
@@ -17,12 +18,8 @@
 namespace cfx::scene_detail
 {
 
-/// Edits turning `a` into `b` (insert, delete, replace, swap two neighbours: 1 each).
-std::size_t EditDistance(std::string_view a, std::string_view b);
-
-/// The key of `known` nearest to `key` when near enough to be a typo of it (at most max(2, size / 3) edits,
-/// fewer than half its characters; case differences count as one edit); nothing otherwise.
-std::optional<std::string_view> NearestKey(std::string_view key, std::span<const std::string_view> known);
+using detail::EditDistance; // nearest_name.h
+using detail::NearestKey;
 
 /// "unknown key, did you mean `gravity`?" or "unknown key (ignored)"; `noun` replaces "key".
 std::string UnknownKeyMessage(std::string_view key, std::span<const std::string_view> known,

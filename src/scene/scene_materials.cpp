@@ -87,7 +87,8 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
             {
                 problems.push_back(
                     {std::string(file), path + ".string",
-                     "unknown material " + detail::QuotedText(*name) + " (the effects config" +
+                     "unknown material " + detail::QuotedText(*name) +
+                         detail::DidYouMean(*name, config.materials) + " (the effects config" +
                          (config.name.empty() ? std::string() : " " + detail::QuotedText(config.name)) +
                          " has: " + detail::NameList(config.materials, "no materials") + ")"});
                 continue;

@@ -199,6 +199,20 @@ TEST(SceneMaterials, AMisspeltMaterialPropertyIsAnError)
         << test::Dump(problems);
 }
 
+// A misspelt material name is named with the nearest material of the config, as in effects configs.
+TEST(SceneMaterials, AMisspeltMaterialNameNamesTheNearestMaterial)
+{
+    const std::string bodies =
+        R"({"type": 2, "position": 0, "awake": true, "fixture": [{"density": 1, "customProperties": [{"name":
+            "material", "string": "rubbr"}], "circle": {"radius": 1}}]})";
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    const std::vector<Diagnostic> problems = ResolveErrors(scene, TutorialPreset());
+    EXPECT_TRUE(
+        test::HasDiagnostic(problems, "body[0].fixture[0].customProperties[0].string",
+                            "unknown material \"rubbr\", did you mean \"rubber\"? (the effects config"))
+        << test::Dump(problems);
+}
+
 TEST(SceneMaterials, BadPropertiesAreAllReportedAndNothingIsAssigned)
 {
     const std::string bodies =

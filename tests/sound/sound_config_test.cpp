@@ -63,7 +63,7 @@ TEST(SoundConfig, BadValuesAreErrorsWithTheirJsonPath)
         "sound.rules[1].release: expected a number, found string \"long\"",
         "sound.impactMergeWindow: expected a number between 0 and 10, found -0.01",
         "sound.rules[0].scrapeStart: expected a number between 0 and 1, found 1.5",
-        "sound.rules[1]: a second sound rule for the pair concrete+steel",
+        "sound.rules[1]: a second sound rule for the pair concrete+steel (the first is sound.rules[0])",
         "sound.rules[2].materialA: unknown material \"glass\" (materials: steel, rubber, concrete, dirt)",
         "sound.rules[2].impactLength: expected a number > 0 and <= 10, found 0",
     };

@@ -1,0 +1,90 @@
+// contactfx internal: see nearest_name.h.
+#include "nearest_name.h"
+
+#include "quoted_text.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace cfx::detail
+{
+
+std::size_t EditDistance(std::string_view a, std::string_view b)
+{
+    // Optimal string alignment: three rows of the table, for the prefixes of `a` of length i - 2, i - 1, i.
+    const std::size_t columns = b.size() + 1;
+    std::vector<std::size_t> older(columns), previous(columns), current(columns);
+    for (std::size_t j = 0; j < columns; ++j)
+    {
+        previous[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        current[0] = i;
+        for (std::size_t j = 1; j < columns; ++j)
+        {
+            const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+            {
+                current[j] = std::min(current[j], older[j - 2] + 1);
+            }
+        }
+        std::swap(older, previous);
+        std::swap(previous, current);
+    }
+    return previous[b.size()];
+}
+
+std::optional<std::string_view> NearestKey(std::string_view key, std::span<const std::string_view> known)
+{
+    auto lower = [](std::string_view text)
+    {
+        std::string out(text);
+        for (char& c : out)
+        {
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        }
+        return out;
+    };
+    const std::size_t limit =
+        std::min(std::max<std::size_t>(2, key.size() / 3), key.empty() ? 0 : (key.size() - 1) / 2);
+    const std::string wanted = lower(key);
+    std::optional<std::string_view> nearest;
+    std::size_t best = limit + 1;
+    for (std::string_view candidate : known)
+    {
+        const std::size_t longer = std::max(key.size(), candidate.size());
+        if (longer - std::min(key.size(), candidate.size()) > limit)
+        {
+            continue; // at least that many insertions: too far (and cheap for a hostile 1 MB key)
+        }
+        // A case slip ("Gravity") is one edit, whatever its length.
+        const std::size_t folded = EditDistance(wanted, lower(candidate));
+        const std::size_t distance = folded == 0 ? (candidate == key ? 0 : 1) : folded;
+        if (distance < best)
+        {
+            best = distance;
+            nearest = candidate;
+        }
+    }
+    if (best == 0)
+    {
+        return std::nullopt;
+    }
+    return nearest;
+}
+
+std::optional<std::string_view> NearestKey(std::string_view key, const std::vector<std::string>& known)
+{
+    const std::vector<std::string_view> views(known.begin(), known.end());
+    return NearestKey(key, std::span<const std::string_view>(views));
+}
+
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& known)
+{
+    const std::optional<std::string_view> nearest = NearestKey(name, known);
+    return nearest ? ", did you mean " + QuotedText(*nearest) + "?" : std::string();
+}
+
+} // namespace cfx::detail
