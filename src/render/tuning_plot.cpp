@@ -463,7 +463,7 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
 std::string detail::TickText(double value, double step)
 {
     char text[32];
-    if (step >= 1.0e5)
+    if (step >= 1.0e5 || step < 1.0e-3) // "0.0000002" would run into the axis's title
     {
         std::snprintf(text, sizeof text, "%.3g", value);
     }

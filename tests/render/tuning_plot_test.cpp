@@ -203,6 +203,10 @@ TEST(TuningPlot, EachAxisLabelsItsTicksInOneFormat)
     EXPECT_EQ(render::detail::TickText(2.0, 0.5), "2.0");
     EXPECT_EQ(render::detail::TickText(15000.0, 5000.0), "15000");
     EXPECT_EQ(render::detail::TickText(1.2e6, 2.0e5), "1.2e+06");
+    // A tiny intensity's axis: "0.0000004" ran into the axis's title.
+    EXPECT_EQ(render::detail::TickText(4.0e-7, 2.0e-7), "4e-07");
+    EXPECT_EQ(render::detail::TickText(0.0, 2.0e-7), "0");
+    EXPECT_EQ(render::detail::TickText(0.003, 0.001), "0.003");
 }
 
 // The same trial's plot of one step had no intensity line: it joined the middles of the columns, and one

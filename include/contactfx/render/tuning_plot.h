@@ -88,8 +88,8 @@ std::string TuningPlotPng(const TuningRecorder& recorder, const EffectsConfig& c
 namespace detail
 {
 /// The text of a tick on an axis whose ticks are `step` apart (> 0), in one format for the whole axis: the
-/// decimals the step needs (steps of 0.002: "0.000", "0.002", ...), or three significant digits from steps
-/// of 100,000 on.
+/// decimals the step needs (steps of 0.002: "0.000", "0.002", ...), or three significant digits for steps
+/// of 100,000 and more and for steps under 0.001 ("2e-07", "4e-07": a tiny intensity's ticks).
 std::string TickText(double value, double step);
 } // namespace detail
 
