@@ -17,9 +17,12 @@ namespace cfx
 namespace
 {
 
+constexpr float kLowestHz = 1.0f;
+constexpr float kHighestHz = 10000.0f;
+
 float CheckedHz(float hz)
 {
-    if (!(hz >= 1.0f && hz <= 10000.0f))
+    if (!(hz >= kLowestHz && hz <= kHighestHz))
     {
         throw InputError("<api>", "hz", "expected a step rate in [1, 10000], found " + std::to_string(hz));
     }
@@ -30,7 +33,10 @@ float CheckedHz(float hz)
 
 Simulation::Simulation(const SimulationDef& def)
     : m_scene(LoadRubeFile(def.scene)), m_drive(def.drive), m_sceneFile(def.scene.string()), m_seed(def.seed),
-      m_particleOptions(def.particles), m_dt(1.0f / CheckedHz(def.hz))
+      m_particleOptions(def.particles),
+      m_dt(1.0f / CheckedHz(def.hz == 0.0f
+                                ? std::clamp(m_scene.settings.stepsPerSecond, kLowestHz, kHighestHz)
+                                : def.hz))
 {
     EffectsDef effectsDef;
     effectsDef.config = def.config;

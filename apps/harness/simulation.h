@@ -30,7 +30,8 @@ struct SimulationDef
     std::filesystem::path scene; ///< RUBE JSON file
     EffectsConfig config = DefaultPreset();
     std::uint64_t seed = 1;
-    float hz = 60.0f;                    ///< steps per second, in [1, 10000]
+    /// Steps per second, in [1, 10000]; 0: the scene's own `stepsPerSecond`, brought into [1, 10000].
+    float hz = 60.0f;
     std::span<const DriveSegment> drive; ///< scripted input for the scene's car; empty: no driver
     ParticleSystemOptions particles;     ///< threads, and the particle check (checkParticles)
 };

@@ -19,6 +19,7 @@ Session::~Session()
 void Session::Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config)
 {
     SimulationDef def = SceneSimulationDef(entry, m_scenesDir);
+    def.hz = 0.0f; // the scene's own stepsPerSecond, as RUBE steps it
     const std::optional<EffectsConfig>& chosen = config ? config : m_chosenConfig;
     if (chosen)
     {
@@ -63,12 +64,13 @@ std::vector<Diagnostic> Session::Warnings() const
 {
     std::vector<Diagnostic> warnings = m_simulation->GetScene().warnings;
     const float sceneHz = m_simulation->GetScene().settings.stepsPerSecond;
-    const float testbedHz = SimulationDef{}.hz; // Open keeps the default rate
-    if (m_file && m_entry == &m_file->entry && sceneHz != testbedHz)
+    const float testbedHz = 1.0f / m_simulation->Dt();
+    if (sceneHz < 1.0f) // Simulation steps at 1 Hz at least
     {
-        Diagnostic warning{m_file->path, "stepsPerSecond",
+        Diagnostic warning{m_file && m_entry == &m_file->entry ? m_file->path : std::string(m_entry->file),
+                           "stepsPerSecond",
                            "the scene steps at " + NumberText(sceneHz) + " Hz; the testbed steps at " +
-                               NumberText(testbedHz) + " Hz"};
+                               NumberText(testbedHz) + " Hz, its lowest rate"};
         warning.warning = true;
         warnings.push_back(std::move(warning));
     }

@@ -34,7 +34,8 @@ public:
     /// input.
     void Open(const SceneEntry& entry, const std::optional<EffectsConfig>& config = std::nullopt);
     /// Opens the RUBE scene file `file` as `contactfx run FILE` does: no scripted drive or per-step action,
-    /// the whole world in view, 60 Hz, with the configuration chosen (see Open), else the default preset.
+    /// the whole world in view, with the configuration chosen (see Open), else the default preset. Every
+    /// scene steps at its file's own `stepsPerSecond` (as RUBE steps it; 1 Hz at least).
     /// Entry() is then the file's (name: the file name; title and file: its absolute path). Throws
     /// InputError naming the file and keeps the current scene on bad input.
     void OpenFile(const std::filesystem::path& file,
@@ -79,7 +80,8 @@ public:
     const Simulation& Sim() const { return *m_simulation; }
     const SceneEntry& Entry() const { return *m_entry; }
     /// What the scene on show loaded with but may not be what its file meant (Scene::warnings: unknown keys,
-    /// dropped vertices), and for a scene file whose stepsPerSecond is not the testbed's 60 Hz, that.
+    /// dropped vertices), and for a scene whose stepsPerSecond is under the testbed's lowest rate (1 Hz),
+    /// that.
     std::vector<Diagnostic> Warnings() const;
     /// Every file the listed scenes are read from: their RUBE files and the registered scenes' effects
     /// files (not a configuration given with --effects, which Save as may update).
