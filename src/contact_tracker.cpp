@@ -1,7 +1,6 @@
 #include "contact_tracker.h"
 
 #include <algorithm>
-#include <bit>
 #include <box2d/b2_body.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_contact.h>
@@ -388,21 +387,7 @@ void ContactTracker::BeginContact(b2Contact* contact)
     Track(contact);
     if (m_forward != nullptr)
     {
-        const float friction = contact->GetFriction();
         m_forward->BeginContact(contact);
-        NoteFrictionSet(contact, friction);
-    }
-}
-
-void ContactTracker::NoteFrictionSet(b2Contact* contact, float frictionBefore)
-{
-    // Bit for bit: a friction set to NaN is a change too (its samples are then skipped as non-finite).
-    if (std::bit_cast<std::uint32_t>(contact->GetFriction()) != std::bit_cast<std::uint32_t>(frictionBefore))
-    {
-        if (TrackedContact* tracked = Tracked(contact)) // it may have ended what is tracked
-        {
-            tracked->frictionSet = true;
-        }
     }
 }
 
@@ -423,9 +408,7 @@ void ContactTracker::PreSolve(b2Contact* contact, const b2Manifold* oldManifold)
     TrackedContact* tracked = Track(contact);
     if (m_forward != nullptr)
     {
-        const float friction = contact->GetFriction();
         m_forward->PreSolve(contact, oldManifold);
-        NoteFrictionSet(contact, friction);
         // It may have changed what is tracked (SetMaterial ends contacts): look again.
         tracked = Tracked(contact);
     }

@@ -67,10 +67,6 @@ struct TrackedContact
     std::uint32_t pair = 0;      ///< slot of its body pair (ContactTracker::Pair)
     std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
-    /// The application changed the contact's friction (b2Contact::SetFriction or ResetFriction) in its
-    /// BeginContact or PreSolve while it was tracked: the emission then uses the contact's friction, as
-    /// Box2D's solver does, instead of mixing the fixtures' (ContactSample::contactFriction).
-    bool frictionSet = false;
 
     // New touches (manifold points new since the last enabled PreSolve, see the file comment), the stuff
     // of impacts (events.h).
@@ -181,9 +177,6 @@ private:
     /// The contact's tracking, begun now if it is solid and its materials select a rule; else null.
     TrackedContact* Track(b2Contact* contact);
     void Untrack(b2Contact* contact, ScrapeEnd reason);
-    /// After the application's BeginContact or PreSolve: marks the contact's friction as set by the
-    /// application when it is not `frictionBefore` (TrackedContact::frictionSet).
-    void NoteFrictionSet(b2Contact* contact, float frictionBefore);
     /// After the application's PreSolve: notes the contact's new touches (see the file comment).
     void NoteTouches(b2Contact* contact, const b2Manifold& oldManifold, TrackedContact& tracked);
     std::uint32_t FindOrAddPair(b2Contact* contact, RuleId rule);

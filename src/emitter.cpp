@@ -4,6 +4,7 @@
 #include "particle_system_access.h"
 
 #include <algorithm>
+#include <bit>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_contact.h>
@@ -101,22 +102,40 @@ bool Asleep(const b2Body* body)
 // tells no side to start on (SpawnQuery::leaving).
 constexpr float kLeavingSpeed = 0.05f;
 
-// The sample of a tracked contact at a world point, after the step, as Box2D solved it: with the friction
-// the application set on the contact (TrackedContact::frictionSet), and with its tangent speed (a conveyor
-// belt: b2Contact::SetTangentSpeed) as a motion of fixture A's surface along the tangent, which is how the
-// solver takes it (it drives the slip of B over A to the tangent speed).
+// The sample of a tracked contact at a world point, after the step, as Box2D solved it: with the contact's
+// own friction when it is not the fixtures' mix (the application set it with b2Contact::SetFriction, at any
+// time, or changed a fixture's friction without ResetFriction: either way it is what the solver uses), and
+// with its tangent speed (a conveyor belt: b2Contact::SetTangentSpeed, which the solver takes as a slip of B
+// over A) as a motion of the surface fixture's surface (SurfaceIsA) along the tangent: the belt moves,
+// whether it is fixture A or B.
 ContactSample SampleAt(const TrackedContact& tracked, b2Vec2 point, b2Vec2 normal)
 {
     const b2Contact* contact = tracked.contact;
+    const b2Fixture* fixtureA = contact->GetFixtureA();
+    const b2Fixture* fixtureB = contact->GetFixtureB();
     ContactSample sample;
     sample.point = point;
     sample.normal = normal;
-    sample.velocityA = contact->GetFixtureA()->GetBody()->GetLinearVelocityFromWorldPoint(point) +
-                       contact->GetTangentSpeed() * b2Cross(normal, 1.0f);
-    sample.velocityB = contact->GetFixtureB()->GetBody()->GetLinearVelocityFromWorldPoint(point);
-    sample.frictionA = contact->GetFixtureA()->GetFriction();
-    sample.frictionB = contact->GetFixtureB()->GetFriction();
-    sample.contactFriction = tracked.frictionSet ? contact->GetFriction() : -1.0f;
+    sample.velocityA = fixtureA->GetBody()->GetLinearVelocityFromWorldPoint(point);
+    sample.velocityB = fixtureB->GetBody()->GetLinearVelocityFromWorldPoint(point);
+    const b2Vec2 belt =
+        contact->GetTangentSpeed() * b2Cross(normal, 1.0f); // B over A, as the solver drives it
+    if (SurfaceIsA(fixtureA, fixtureB))
+    {
+        sample.velocityA += belt;
+    }
+    else
+    {
+        sample.velocityB -= belt;
+    }
+    sample.frictionA = fixtureA->GetFriction();
+    sample.frictionB = fixtureB->GetFriction();
+    // Bit for bit: Box2D sets a contact's friction to this mix when it makes the contact and on
+    // ResetFriction; a friction set to NaN differs too (its samples are then skipped as non-finite).
+    const float mixed = b2MixFriction(sample.frictionA, sample.frictionB);
+    const float friction = contact->GetFriction();
+    sample.contactFriction =
+        std::bit_cast<std::uint32_t>(friction) != std::bit_cast<std::uint32_t>(mixed) ? friction : -1.0f;
     return sample;
 }
 

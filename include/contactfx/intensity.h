@@ -59,8 +59,9 @@ struct ContactSample
     b2Vec2 velocityB{0.0f, 0.0f}; ///< velocity of body B at the point, m/s
     float frictionA = 0.0f;       ///< friction coefficient of fixture A, >= 0
     float frictionB = 0.0f;       ///< friction coefficient of fixture B, >= 0
-    /// >= 0: the contact's own friction, which the application set (b2Contact::SetFriction in a contact
-    /// callback, an icy patch): used as it is instead of mixing frictionA and frictionB. < 0: not set.
+    /// >= 0: the contact's own friction, when it is not Box2D's mix of frictionA and frictionB (the
+    /// application set it with b2Contact::SetFriction, an icy patch): used as it is instead of the rule's
+    /// mix of frictionA and frictionB. < 0: the contact has Box2D's mix.
     float contactFriction = -1.0f;
     /// N, >= 0: the normal force pressing the sample: PostSolve normal impulse / step time (rate emission
     /// gives each point its body pair's total, see rules.h)

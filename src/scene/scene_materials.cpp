@@ -1,4 +1,5 @@
-// Scene fixtures -> materials: the `material` property first, then the config's assignment rules.
+// Scene fixtures -> materials: the fixture's `material` property first, then its body's, then the config's
+// assignment rules.
 //
 // Every bad property of the scene is collected before anything is thrown, so a user fixes the file in one
 // pass, and no fixture is touched unless the whole scene resolves.
@@ -11,6 +12,8 @@
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
+#include <cctype>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -41,61 +44,95 @@ std::string DescribeNonString(const CustomProperty& property)
     return std::visit(Describe{}, property.value);
 }
 
+// Whether `name` looks like a misspelt `material`: one edit from it, a case slip included ("Material",
+// "materal", "materials"). Only looked at on an object without a `material` property, and only for string
+// properties: "materialId" or "subMaterial" are properties of their own.
+bool MisspeltMaterial(std::string_view name)
+{
+    std::string lower(name);
+    for (char& c : lower)
+    {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return name != "material" && detail::EditDistance(lower, "material") <= 1;
+}
+
+// The material an object's (body's or fixture's) custom properties name: nullopt when it has no `material`
+// property, an invalid id when it names a bad one (the problem is added to `problems`). `at`: the object's
+// JSON path ("body[1].fixture[0]").
+std::optional<MaterialId> MaterialProperty(const CustomProperties& properties, const std::string& at,
+                                           const EffectsConfig& config, std::string_view file,
+                                           std::vector<Diagnostic>& problems)
+{
+    std::optional<MaterialId> found;
+    for (std::size_t k = 0; k < properties.items.size(); ++k)
+    {
+        const CustomProperty& property = properties.items[k];
+        const std::string path = at + ".customProperties[" + std::to_string(k) + "]";
+        if (property.name != "material")
+        {
+            // A typo of it gives the object no material, silently (a trial lost 80 % of its dust).
+            if (properties.Find("material") == nullptr && MisspeltMaterial(property.name) &&
+                std::holds_alternative<std::string>(property.value))
+            {
+                problems.push_back({std::string(file), path + ".name",
+                                    "a custom property named " + detail::QuotedText(property.name) +
+                                        ", did you mean `material`? (it gives no material)"});
+            }
+            continue;
+        }
+        found = MaterialId{};
+        const std::string* name = std::get_if<std::string>(&property.value);
+        if (name == nullptr)
+        {
+            problems.push_back(
+                {std::string(file), path,
+                 "expected the material as a string property, found " + DescribeNonString(property)});
+            continue;
+        }
+        const MaterialId material = config.FindMaterial(*name);
+        if (!material.IsValid())
+        {
+            problems.push_back(
+                {std::string(file), path + ".string",
+                 "unknown material " + detail::QuotedText(*name) +
+                     detail::DidYouMean(*name, config.materials) + " (the effects config" +
+                     (config.name.empty() ? std::string() : " " + detail::QuotedText(config.name)) +
+                     " has: " + detail::NameList(config.materials, "no materials") + ")"});
+            continue;
+        }
+        found = material;
+    }
+    return found;
+}
+
 } // namespace
 
 std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsConfig& config,
                                               std::string_view file)
 {
     std::vector<Diagnostic> problems;
+    std::vector<std::optional<MaterialId>> bodyMaterials(scene.bodies.size());
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    {
+        bodyMaterials[b] = MaterialProperty(scene.bodies[b].properties, "body[" + std::to_string(b) + "]",
+                                            config, file, problems);
+    }
     std::vector<MaterialId> materials(scene.fixtures.size());
     std::vector<int> fixturesSeen(scene.bodies.size(), 0);
     for (std::size_t f = 0; f < scene.fixtures.size(); ++f)
     {
         const SceneFixture& fixture = scene.fixtures[f];
         const std::size_t body = static_cast<std::size_t>(fixture.bodyIndex);
-        const int indexInBody = fixturesSeen[body]++;
-        bool hasProperty = false;
-        for (std::size_t k = 0; k < fixture.properties.items.size(); ++k)
+        const std::string at =
+            "body[" + std::to_string(body) + "].fixture[" + std::to_string(fixturesSeen[body]++) + "]";
+        const std::optional<MaterialId> own =
+            MaterialProperty(fixture.properties, at, config, file, problems);
+        if (own || bodyMaterials[body])
         {
-            const CustomProperty& property = fixture.properties.items[k];
-            const std::string path = "body[" + std::to_string(body) + "].fixture[" +
-                                     std::to_string(indexInBody) + "].customProperties[" + std::to_string(k) +
-                                     "]";
-            if (property.name != "material")
-            {
-                // A typo of it gives the fixture no material, silently (a trial lost 80 % of its dust).
-                static constexpr std::string_view kMaterial[] = {"material"};
-                if (scene_detail::NearestKey(property.name, kMaterial))
-                {
-                    problems.push_back({std::string(file), path + ".name",
-                                        "a custom property named " + detail::QuotedText(property.name) +
-                                            ", did you mean `material`? (it gives the fixture no material)"});
-                }
-                continue;
-            }
-            hasProperty = true;
-            const std::string* name = std::get_if<std::string>(&property.value);
-            if (name == nullptr)
-            {
-                problems.push_back(
-                    {std::string(file), path,
-                     "expected the material as a string property, found " + DescribeNonString(property)});
-                continue;
-            }
-            const MaterialId material = config.FindMaterial(*name);
-            if (!material.IsValid())
-            {
-                problems.push_back(
-                    {std::string(file), path + ".string",
-                     "unknown material " + detail::QuotedText(*name) +
-                         detail::DidYouMean(*name, config.materials) + " (the effects config" +
-                         (config.name.empty() ? std::string() : " " + detail::QuotedText(config.name)) +
-                         " has: " + detail::NameList(config.materials, "no materials") + ")"});
-                continue;
-            }
-            materials[f] = material;
+            materials[f] = own ? *own : *bodyMaterials[body];
         }
-        if (!hasProperty && fixture.fixture != nullptr)
+        else if (fixture.fixture != nullptr)
         {
             const FixtureFacts facts = FactsOf(*fixture.fixture, scene.bodies[body].name, fixture.name);
             if (std::optional<std::size_t> rule = FirstMatch(config.assignments, facts))

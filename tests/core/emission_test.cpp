@@ -225,6 +225,131 @@ TEST(Emission, AContactsOwnFrictionAndTangentSpeedAreWhatTheSparksFollow)
     EXPECT_EQ(sparks(-1.0f, 6.0f, 0.0f, true).first, concrete);
 }
 
+// A trial found the friction an application set lost where the contact began before the effects tracked
+// it (effects created later, a material given later), and a belt that was the contact's fixture B moved
+// the block instead of itself (a polygon belt created after the block is fixture B): its sparks went the
+// wrong way. The contact's own friction is now whatever differs from Box2D's mix, however it came to differ.
+TEST(Emission, AnIcyContactMadeBeforeTheEffectsAndABeltAsFixtureBAreTakenAsBox2DTakesThem)
+{
+    class Icy final : public b2ContactListener
+    {
+    public:
+        void BeginContact(b2Contact* contact) override { contact->SetFriction(0.0f); }
+    };
+    // Ice set once, in BeginContact, 10 steps before the effects exist: no sparks from a sliding block.
+    for (const bool late : {false, true})
+    {
+        Icy icy;
+        TestWorld scene;
+        scene.world->SetContactListener(&icy);
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        box->SetLinearVelocity(b2Vec2(6.0f, 0.0f));
+        for (int i = 0; late && i < 10; ++i)
+        {
+            scene.Step();
+        }
+        scene.AttachSteelOnConcrete(DefaultPreset(), ground, box, &icy);
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.Step();
+        }
+        EXPECT_FLOAT_EQ(box->GetLinearVelocity().x, 6.0f) << "ice, late " << late;
+        EXPECT_EQ(scene.Spawned("sparks"), 0u) << "late " << late;
+    }
+
+    // A fixture's friction changed while touching: Box2D's contact keeps the old one until ResetFriction,
+    // and so do the sparks; after ResetFriction, the new mix (0: none).
+    {
+        TestWorld scene;
+        b2Body* ground = scene.CreateGround();
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        scene.AttachSteelOnConcrete(DefaultPreset(), ground, box);
+        const auto slide = [&](int steps)
+        {
+            const std::uint64_t before = scene.Spawned("sparks");
+            for (int i = 0; i < steps; ++i)
+            {
+                box->SetLinearVelocity(b2Vec2(6.0f, box->GetLinearVelocity().y));
+                box->SetAngularVelocity(0.0f);
+                scene.Step();
+            }
+            return scene.Spawned("sparks") - before;
+        };
+        const std::uint64_t rough = slide(30);
+        ASSERT_GT(rough, 100u);
+        ground->GetFixtureList()->SetFriction(0.0f);
+        EXPECT_NEAR(static_cast<double>(slide(30)), static_cast<double>(rough),
+                    0.1 * static_cast<double>(rough))
+            << "the contact still has its old friction";
+        for (b2Contact* c = scene.world->GetContactList(); c != nullptr; c = c->GetNext())
+        {
+            c->ResetFriction();
+        }
+        EXPECT_EQ(slide(30), 0u) << "after ResetFriction";
+    }
+
+    // A block held still on a polygon belt moving at 6 m/s along +x, the belt created before the block
+    // (fixture A) or after it (fixture B): the start velocity of its sparks.
+    class Belt final : public b2ContactListener
+    {
+    public:
+        void PreSolve(b2Contact* contact, const b2Manifold*) override
+        {
+            // The solver drives B over A to the tangent speed (Box2D's testbed conveyor sets +- its speed).
+            const bool beltIsA = contact->GetFixtureA()->GetBody()->GetType() == b2_staticBody;
+            b2WorldManifold manifold;
+            contact->GetWorldManifold(&manifold);
+            const float along = b2Cross(manifold.normal, 1.0f).x;
+            contact->SetTangentSpeed((beltIsA ? 6.0f : -6.0f) * along);
+        }
+    };
+    const auto sparkVelocity = [](bool beltFirst, VelocityFrame frame)
+    {
+        Belt belt;
+        TestWorld scene;
+        b2Body* ground =
+            beltFirst ? scene.CreateBox(b2Vec2(0.0f, -0.5f), 50.0f, 0.5f, 0.8f, b2_staticBody) : nullptr;
+        b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+        ground = beltFirst ? ground : scene.CreateBox(b2Vec2(0.0f, -0.5f), 50.0f, 0.5f, 0.8f, b2_staticBody);
+        EffectsConfig config = DefaultPreset();
+        TestWorld::StillSparks(config).velocityFrame = frame;
+        Effects& fx = scene.AttachSteelOnConcrete(config, ground, box, &belt);
+        double sum = 0.0;
+        std::uint32_t count = 0;
+        bool beltWasA = false;
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.world->Step(1.0f / 60.0f, 8, 3);
+            box->SetLinearVelocity(b2Vec2(0.0f, box->GetLinearVelocity().y));
+            box->SetAngularVelocity(0.0f);
+            fx.Step(1.0f / 60.0f);
+            for (const b2Contact* c = scene.world->GetContactList(); c != nullptr; c = c->GetNext())
+            {
+                beltWasA = c->GetFixtureA()->GetBody() == ground;
+            }
+            const ParticleView view = fx.Particles();
+            for (std::uint32_t k = view.count - fx.Stats().rules[0].spawnedLastStep; k < view.count; ++k)
+            {
+                sum += view.velocityX[view.Slot(k)];
+                ++count;
+            }
+        }
+        EXPECT_EQ(beltWasA, beltFirst) << "the scene has the fixture order it means to";
+        EXPECT_GT(count, 30u);
+        return static_cast<float>(sum / std::max(count, 1u));
+    };
+    for (const bool beltFirst : {true, false})
+    {
+        // The block slides at -6 m/s over the belt: slipFactor 0.5 of it, plus the belt's 6 m/s in the
+        // surface's frame; the slip alone in the world's.
+        EXPECT_NEAR(sparkVelocity(beltFirst, VelocityFrame::surface), 3.0f, 1e-3f)
+            << "belt first " << beltFirst;
+        EXPECT_NEAR(sparkVelocity(beltFirst, VelocityFrame::world), -3.0f, 1e-3f)
+            << "belt first " << beltFirst;
+    }
+}
+
 TEST(Emission, RateDoesNotDependOnTheStepRate)
 {
     const std::uint64_t at60 = SlideBox(DefaultPreset(), 4.0f, 60.0f);

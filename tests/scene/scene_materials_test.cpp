@@ -144,6 +144,71 @@ TEST(SceneMaterials, PropertyTakesPrecedenceAndNamesAreMatched)
     EXPECT_EQ(MaterialNames(scene, config), (std::vector<std::string>{"b", "a", "none"}));
 }
 
+// A body's `material` property goes to its fixtures without one of their own (a RUBE user sets it once on
+// the body); a fixture's own property and then the body's come before the assignments.
+TEST(SceneMaterials, ABodysMaterialGoesToItsFixturesWithoutOne)
+{
+    const std::string bodies =
+        R"({"type": 2, "position": 0, "awake": true, "name": "crate", "customProperties": [{"name": "material",
+            "string": "b"}], "fixture": [{"density": 1, "circle": {"radius": 1}}, {"density": 1,
+            "customProperties": [{"name": "material", "string": "a"}], "circle": {"radius": 1}}]})";
+    const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+    EffectsConfig config;
+    config.materials = {"a", "b", "c"};
+    MaterialAssignment crates;
+    crates.material = "c";
+    crates.bodyName = "crate";
+    config.assignments = {crates};
+    EXPECT_EQ(MaterialNames(scene, config), (std::vector<std::string>{"b", "a"}));
+
+    const std::string bad =
+        R"({"type": 2, "position": 0, "awake": true, "customProperties": [{"name": "material", "string": "d"}],
+            "fixture": [{"density": 1, "circle": {"radius": 1}}]})";
+    const std::vector<Diagnostic> problems =
+        ResolveErrors(LoadRubeString(test::World(bad), "scene.json"), config);
+    EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].customProperties[0].string", "unknown material \"d\""))
+        << test::Dump(problems);
+}
+
+// A trial's scenes failed on properties of their own whose names are near `material` ("materialId",
+// "subMaterial", "material_fx") and on "materials" beside a `material`: only a string property one edit from
+// the name, on a body or fixture without a `material` property, is taken for a typo.
+TEST(SceneMaterials, OnlyALikelyTypoOfMaterialIsAnError)
+{
+    const auto problemsWith = [](const std::string& properties)
+    {
+        const std::string bodies = R"({"type": 2, "position": 0, "awake": true, "fixture": [{"density": 1,
+            "customProperties": [)" +
+                                   properties + R"(], "circle": {"radius": 1}}]})";
+        const Scene scene = LoadRubeString(test::World(bodies), "scene.json");
+        try
+        {
+            ResolveSceneMaterials(scene, TutorialPreset(), "scene.json");
+        }
+        catch (const InputError& error)
+        {
+            return error.Diagnostics();
+        }
+        return std::vector<Diagnostic>{};
+    };
+    for (const char* fine :
+         {R"({"name": "material", "string": "steel"}, {"name": "materials", "string": "a b"})",
+          R"({"name": "Material", "string": "x"}, {"name": "material", "string": "steel"})",
+          R"({"name": "materialId", "string": "7"})", R"({"name": "subMaterial", "string": "oak"})",
+          R"({"name": "material_fx", "string": "sparks"})", R"({"name": "materal", "int": 3})"})
+    {
+        EXPECT_TRUE(problemsWith(fine).empty()) << fine << test::Dump(problemsWith(fine));
+    }
+    for (const char* typo :
+         {R"({"name": "Material", "string": "steel"})", R"({"name": "materials", "string": "steel"})",
+          R"({"name": "materal", "string": "steel"})"})
+    {
+        EXPECT_TRUE(test::HasDiagnostic(problemsWith(typo), "body[0].fixture[0].customProperties[0].name",
+                                        "did you mean `material`?"))
+            << typo << test::Dump(problemsWith(typo));
+    }
+}
+
 // A chain's back side (the reversed chain that makes it two-sided, see SceneFixture::backSide) is the same
 // surface: it gets the chain's material, so that a body on either side makes the same effects.
 TEST(SceneMaterials, AChainsBackSideGetsTheChainsMaterial)
