@@ -122,10 +122,16 @@ private:
     int Budgeted(float owed, EffectsStats& stats) const;
     void EmitRate(RuleContext& context, std::uint32_t pairSlot, const PairStep& step, float intensity);
     void Burst(RuleContext& context, const TrackedContact& tracked);
-    /// Spawns `count` particles of type `typeId` at the sample: the rule's type for its scrapes, its burst
-    /// type for its impacts.
+    /// What particles are spawned for: a scrape (the rule's type) or an impact (its burst type; `intensity`
+    /// is then the approach speed).
+    enum class SpawnFor : std::uint8_t
+    {
+        scrape,
+        impact
+    };
+    /// Spawns `count` particles at the sample.
     void SpawnParticles(RuleContext& context, const TrackedContact& tracked, const ContactSample& sample,
-                        float intensity, int count, ParticleTypeId typeId);
+                        float intensity, int count, SpawnFor what);
 
     Random m_random;
     bool m_auditStarts;
