@@ -323,12 +323,24 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         check.Fail("rules", "expected at most 65534 rules, found " + std::to_string(config.rules.size()));
     }
     MaterialPairs pairs;
+    std::map<std::string, std::size_t> pairNames;
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
         const std::string at = "rules[" + std::to_string(i) + "]";
         const RuleDef& rule = config.rules[i];
         CheckFields(check, at, rule, RuleFields(), config);
-        NoteRepeatedPair(check, pairs, "rules", i, rule.materialA, rule.materialB, "rule");
+        if (!NoteRepeatedPair(check, pairs, "rules", i, rule.materialA, rule.materialB, "rule"))
+        {
+            // Files and events name a rule by its pair ("a+b"): "a+b" with "c" and "a" with "b+c" would both
+            // be "a+b+c" (a trial's stats file lost one of them).
+            const auto [named, inserted] = pairNames.emplace(PairName(rule.materialA, rule.materialB), i);
+            if (!inserted)
+            {
+                check.Fail(at, "the pair name \"" + named->first + "\" is also rules[" +
+                                   std::to_string(named->second) +
+                                   "]'s, of other materials (a name with \"+\" in it): rename a material");
+            }
+        }
     }
 
     for (std::size_t i = 0; i < config.assignments.size(); ++i)

@@ -52,9 +52,12 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
     {
         const RuleDef& rule = config.rules[i];
         const RuleStats& counts = stats.rules[i];
+        const std::string types =
+            rule.burstParticleType.empty() || rule.burstParticleType == rule.particleType
+                ? rule.particleType
+                : rule.particleType + ", bursts " + rule.burstParticleType;
         std::printf("  %-18s -> %-8s at most %u contacts, %llu particles", PairName(rule).c_str(),
-                    rule.particleType.c_str(), counts.contactsMax,
-                    static_cast<unsigned long long>(counts.spawned));
+                    types.c_str(), counts.contactsMax, static_cast<unsigned long long>(counts.spawned));
         if (counts.spawnRejected > 0) // no free start near the contact: a pile, a crevice, a thin pane
         {
             std::printf(", %llu not started (no free place)",

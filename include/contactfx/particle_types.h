@@ -32,8 +32,10 @@ enum class VelocityFrame : std::uint8_t
 {
     /// The surface's: start velocity = surface velocity + inheritA * (vA - surface velocity) + inheritB *
     /// (vB - surface velocity) + slipFactor * slip. What a body does over a moving surface (a conveyor, a
-    /// grinding wheel, a truck's bed) looks as it does over a still one, whichever of the two is the
-    /// surface; over a still surface it is the same as `world`.
+    /// grinding wheel, a truck's bed) looks as it does over a still one; over a still surface it is the
+    /// same as `world`. The surface is the static or kinematic body's fixture, else the heavier body's, and
+    /// the slip is the other's over it: a spinning wheel lighter than what it grinds throws along its rim
+    /// at (1 - slipFactor) of the rim's speed instead of slipFactor (docs/design.md).
     surface,
     /// The world's, the tutorial's: start velocity = inheritA * vA + inheritB * vB + slipFactor * slip.
     world,

@@ -141,6 +141,22 @@ TEST(CliRun, TheStatsFileCountsTheRecycledParticles)
         << result.output;
 }
 
+// A trial's rule bursting smoke was summarised as "-> sparks", with the smoke in its particles.
+TEST(CliRun, TheSummaryNamesARulesBurstType)
+{
+    const std::filesystem::path dir = ScratchDir("burst_type");
+    nlohmann::json config = nlohmann::json::parse(RunCli("preset default").output);
+    config["rules"][0]["burstParticleType"] = "smoke";
+    std::ofstream(dir / "burst.effects.json") << config.dump();
+    const CliResult result =
+        RunCli("run --scene grinder --seconds 0.1 --effects " + (dir / "burst.effects.json").string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    EXPECT_NE(result.output.find("concrete+steel     -> sparks, bursts smoke at most"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("concrete+rubber    -> smoke    at most"), std::string::npos)
+        << result.output;
+}
+
 TEST(CliRun, RunsAnyRubeSceneWithEffectsConfig)
 {
     CONTACTFX_REQUIRE_RUBE_SAMPLES();

@@ -130,6 +130,11 @@ std::vector<BadFile> BadFiles()
          Effects(R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks"},
                     {"materialA": "stone", "materialB": "steel", "particleType": "sparks"})"),
          "rules[1]", "a second rule for the pair steel+stone (the first is rules[0])"},
+        {"same_pair_name.effects.json",
+         R"({"materials": ["a+b", "c", "a", "b+c"], "particleTypes": [{"name": "p"}], "rules": [
+             {"materialA": "a+b", "materialB": "c", "particleType": "p"},
+             {"materialA": "a", "materialB": "b+c", "particleType": "p"}]})",
+         "rules[1]", "the pair name \"a+b+c\" is also rules[0]'s"},
         {"misspelt_material.effects.json",
          Effects(R"({"materialA": "steel", "materialB": "stnoe", "particleType": "sparks"})"),
          "rules[0].materialB",

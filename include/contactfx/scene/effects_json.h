@@ -26,7 +26,8 @@ EffectsConfig LoadEffectsString(std::string_view json, std::string_view fileName
 /// Every problem of the file, or an empty list; never throws for bad content.
 std::vector<Diagnostic> ValidateEffectsFile(const std::filesystem::path& path);
 
-/// The config as JSON text, every field written. Throws InputError (file "<api>", Validate's problems) for
+/// The config as JSON text, every field written (but `burstParticleType`, written only when set, so that
+/// configs saved before it read the same). Throws InputError (file "<api>", Validate's problems) for
 /// a config that is not valid (a NaN, a value out of its range): what is saved always loads again.
 std::string SaveEffectsString(const EffectsConfig& config);
 /// Writes atomically (temporary file, then rename). Throws InputError naming the path on failure, or as
