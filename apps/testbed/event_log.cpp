@@ -1,5 +1,7 @@
 #include "event_log.h"
 
+#include "harness/simulation.h"
+
 #include <cstdio>
 
 namespace cfx::testbed
@@ -21,9 +23,8 @@ std::string DescribeEvent(const EffectEvent& event, const EffectsConfig& config,
         return line;
     }
     const RuleDef& rule = config.rules[event.rule.index];
-    const int prefix = std::snprintf(line, sizeof line, "%5.2f %-6s #%-3u %s+%s ", static_cast<double>(time),
-                                     kTypes[static_cast<int>(event.type)], event.id, rule.materialA.c_str(),
-                                     rule.materialB.c_str());
+    const int prefix = std::snprintf(line, sizeof line, "%5.2f %-6s #%-3u %s ", static_cast<double>(time),
+                                     kTypes[static_cast<int>(event.type)], event.id, PairName(rule).c_str());
     const std::size_t at = prefix > 0 ? static_cast<std::size_t>(prefix) : 0;
     if (at < sizeof line)
     {

@@ -37,7 +37,8 @@ void StatisticsPanel(const Session& session, const StepTimeWindow& times, float 
             const RuleStats& counts = stats.rules[i];
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%s + %s", rule.materialA.c_str(), rule.materialB.c_str());
+            ImGui::TextUnformatted(
+                PairName(rule).c_str()); // as the CLI, the events and the stats file name it
             ImGui::TableNextColumn();
             ImGui::Text("%u", counts.contacts);
             ImGui::TableNextColumn();

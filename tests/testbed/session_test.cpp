@@ -420,7 +420,8 @@ TEST(TestbedEvents, DescribeNamesTypePairAndMeasure)
     const std::string text = DescribeEvent(impact, config, 1.5f);
     EXPECT_NE(text.find("impact"), std::string::npos) << text;
     EXPECT_NE(text.find("#7"), std::string::npos) << text;
-    EXPECT_NE(text.find("steel+concrete"), std::string::npos) << text;
+    EXPECT_NE(text.find("concrete+steel"), std::string::npos)
+        << text << ": the pair named as the events file does";
     EXPECT_NE(text.find("4.2"), std::string::npos) << text;
     EffectEvent ended;
     ended.type = EffectEventType::scrapeEnded;
