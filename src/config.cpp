@@ -53,6 +53,8 @@ class Checker
 public:
     Checker(std::string_view file, std::vector<Diagnostic>& out) : m_file(file), m_out(out) {}
 
+    detail::SuggestionBudget suggestions; // for every "did you mean" of the file
+
     void Fail(const std::string& path, const std::string& message)
     {
         m_out.push_back(Diagnostic{std::string(m_file), path, message});
@@ -130,7 +132,7 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
         else if (rule == TextRule::material && !config.FindMaterial(text).IsValid())
         {
             check.Fail(path, "unknown material " + detail::QuotedText(text) +
-                                 detail::DidYouMean(text, config.materials) +
+                                 detail::DidYouMean(text, config.materials, check.suggestions) +
                                  " (materials: " + detail::NameList(config.materials, "none") + ")");
         }
         else if (rule == TextRule::particleType && !config.FindParticleType(text).IsValid())
@@ -141,7 +143,7 @@ void CheckText(Checker& check, const std::string& path, const std::string& text,
                 types.push_back(type.name);
             }
             check.Fail(path, "unknown particle type " + detail::QuotedText(text) +
-                                 detail::DidYouMean(text, types) +
+                                 detail::DidYouMean(text, types, check.suggestions) +
                                  " (particle types: " + detail::NameList(types, "none") + ")");
         }
         break;

@@ -101,11 +101,14 @@ bool Asleep(const b2Body* body)
 // m/s: a particle's motion along the surface, relative to the other body's footprint, slower than this
 // tells no side to start on (SpawnQuery::leaving).
 constexpr float kLeavingSpeed = 0.05f;
-// An impact's burst: motion along the surface slower than this share of the approach speed (a hit more than
-// a slide) tells no side either, and the burst starts outward from under the other body, beside the point
-// that struck (a tilted slab slamming down creeps 0.24 m/s along the ground at 6.6 m/s: its burst walked
-// the slab's whole length, under it, to start 4 m from the corner that struck).
-constexpr float kBurstLeavingShare = 0.5f;
+// An impact whose point slides along the surface slower than this share of its approach speed is a hit
+// more than a slide: its burst starts outward from under the other body, beside the point that struck (a
+// tilted slab slamming down creeps 0.24 m/s along the ground at 6.6 m/s: its burst walked the slab's whole
+// length, under it, to start 4 m from the corner that struck). A faster slide's burst starts where the
+// slide's own particles do.
+constexpr float kHitSlideShare = 0.5f;
+// m: a contact point nearer than this to under the other body's centre (a circle's) tells no side.
+constexpr float kOffMiddle = 0.01f;
 
 // The sample of a tracked contact at a world point, after the step, as Box2D solved it: with the contact's
 // own friction when it is not the fixtures' mix (the application set it with b2Contact::SetFriction, at any
@@ -577,14 +580,19 @@ void Emitter::SpawnParticles(RuleContext& context, const TrackedContact& tracked
     query.surfaceChild = surfaceIsA ? contact->GetChildIndexA() : contact->GetChildIndexB();
     query.point = sample.point;
     query.normal = surfaceNormal;
-    // Nothing carried along the surface and no slip to speak of (a flat landing, where rounding alone
-    // picked a side, often the far one across the whole body): outward from under the other body, from its
-    // centre through the contact point.
-    const float still =
-        what == SpawnFor::impact ? std::max(kLeavingSpeed, kBurstLeavingShare * intensity) : kLeavingSpeed;
-    query.leaving = leaving.LengthSquared() > still * still ? leaving
-                    : slip.LengthSquared() > still * still  ? slip
-                                                           : sample.point - other.GetBody()->GetWorldCenter();
+    // A hit (see kHitSlideShare) off the other body's middle (a corner, not a circle, whose footprint is a
+    // point with both sides alike), or nothing carried along the surface and no slip to speak of (a flat
+    // landing, where rounding alone picked a side, often the far one across the whole body): outward from
+    // under the other body, from its centre through the contact point.
+    b2Vec2 outward = sample.point - other.GetBody()->GetWorldCenter();
+    outward -= b2Dot(outward, surfaceNormal) * surfaceNormal;
+    const float hitSlide = kHitSlideShare * intensity;
+    const bool hit = what == SpawnFor::impact && slip.LengthSquared() <= hitSlide * hitSlide &&
+                     outward.LengthSquared() > kOffMiddle * kOffMiddle;
+    query.leaving = hit                                                       ? outward
+                    : leaving.LengthSquared() > kLeavingSpeed * kLeavingSpeed ? leaving
+                    : slip.LengthSquared() > kLeavingSpeed * kLeavingSpeed    ? slip
+                                                                              : outward;
     query.otherBody = other.GetBody();
     query.radius = type.radius;
     // The tutorial's drop starts inside a wheel its particles do not collide with, as the tutorial does.

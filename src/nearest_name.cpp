@@ -36,6 +36,17 @@ std::size_t EditDistance(std::string_view a, std::string_view b)
     return previous[b.size()];
 }
 
+namespace
+{
+
+// The most edits a typo of `key` may have: max(2, size / 3), fewer than half its characters.
+std::size_t NearestLimit(std::string_view key)
+{
+    return std::min(std::max<std::size_t>(2, key.size() / 3), key.empty() ? 0 : (key.size() - 1) / 2);
+}
+
+} // namespace
+
 std::optional<std::string_view> NearestKey(std::string_view key, std::span<const std::string_view> known)
 {
     auto lower = [](std::string_view text)
@@ -47,8 +58,7 @@ std::optional<std::string_view> NearestKey(std::string_view key, std::span<const
         }
         return out;
     };
-    const std::size_t limit =
-        std::min(std::max<std::size_t>(2, key.size() / 3), key.empty() ? 0 : (key.size() - 1) / 2);
+    const std::size_t limit = NearestLimit(key);
     const std::string wanted = lower(key);
     std::optional<std::string_view> nearest;
     std::size_t best = limit + 1;
@@ -81,8 +91,24 @@ std::optional<std::string_view> NearestKey(std::string_view key, const std::vect
     return NearestKey(key, std::span<const std::string_view>(views));
 }
 
-std::string DidYouMean(std::string_view name, const std::vector<std::string>& known)
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& known, SuggestionBudget& budget)
 {
+    // What NearestKey's table costs: every candidate its length test lets through (see NearestLimit).
+    const std::size_t limit = NearestLimit(name);
+    std::size_t cells = 0;
+    for (const std::string& candidate : known)
+    {
+        const std::size_t longer = std::max(name.size(), candidate.size());
+        if (longer - std::min(name.size(), candidate.size()) <= limit)
+        {
+            cells += (name.size() + 1) * (candidate.size() + 1);
+            if (cells > budget.cells)
+            {
+                return std::string();
+            }
+        }
+    }
+    budget.cells -= cells;
     const std::optional<std::string_view> nearest = NearestKey(name, known);
     return nearest ? ", did you mean " + QuotedText(*nearest) + "?" : std::string();
 }

@@ -62,6 +62,7 @@ bool MisspeltMaterial(std::string_view name)
 // JSON path ("body[1].fixture[0]").
 std::optional<MaterialId> MaterialProperty(const CustomProperties& properties, const std::string& at,
                                            const EffectsConfig& config, std::string_view file,
+                                           detail::SuggestionBudget& budget,
                                            std::vector<Diagnostic>& problems)
 {
     std::optional<MaterialId> found;
@@ -96,7 +97,7 @@ std::optional<MaterialId> MaterialProperty(const CustomProperties& properties, c
             problems.push_back(
                 {std::string(file), path + ".string",
                  "unknown material " + detail::QuotedText(*name) +
-                     detail::DidYouMean(*name, config.materials) + " (the effects config" +
+                     detail::DidYouMean(*name, config.materials, budget) + " (the effects config" +
                      (config.name.empty() ? std::string() : " " + detail::QuotedText(config.name)) +
                      " has: " + detail::NameList(config.materials, "no materials") + ")"});
             continue;
@@ -112,11 +113,12 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
                                               std::string_view file)
 {
     std::vector<Diagnostic> problems;
+    detail::SuggestionBudget budget;
     std::vector<std::optional<MaterialId>> bodyMaterials(scene.bodies.size());
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     {
         bodyMaterials[b] = MaterialProperty(scene.bodies[b].properties, "body[" + std::to_string(b) + "]",
-                                            config, file, problems);
+                                            config, file, budget, problems);
     }
     std::vector<MaterialId> materials(scene.fixtures.size());
     std::vector<int> fixturesSeen(scene.bodies.size(), 0);
@@ -127,7 +129,7 @@ std::vector<MaterialId> ResolveSceneMaterials(const Scene& scene, const EffectsC
         const std::string at =
             "body[" + std::to_string(body) + "].fixture[" + std::to_string(fixturesSeen[body]++) + "]";
         const std::optional<MaterialId> own =
-            MaterialProperty(fixture.properties, at, config, file, problems);
+            MaterialProperty(fixture.properties, at, config, file, budget, problems);
         if (own || bodyMaterials[body])
         {
             materials[f] = own ? *own : *bodyMaterials[body];

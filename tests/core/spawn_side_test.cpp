@@ -314,4 +314,81 @@ TEST(SpawnSide, ATiltedLandingsBurstsStartBesideTheCornersThatStruck)
     }
 }
 
+// The rule is on the slide of the point that struck, as documented: a slam sliding slower than half its
+// approach bursts beside the corner, a faster one where its slide's own sparks start, behind it (a
+// trial found the side flipping with the burst type's slipFactor, and the slip's side, ahead, between). A
+// rolling wheel's landing, whose footprint is a point, bursts where its rim rises, as its dirt does.
+TEST(SpawnSide, ASlidingSlamBurstsAsItsSlideAndARollingWheelsLandingWhereItsRimRises)
+{
+    // Where the first burst of a 4 m slab thrown at (vx, -3) m/s, tilted 5 degrees nose down, starts along x
+    // from the corner that struck, and the slab's extent then.
+    const auto slam = [](float vx) // (start - corner, rear end - corner)
+    {
+        TestWorld scene(b2Vec2(0.0f, 0.0f));
+        b2Body* ground = scene.CreateGround();
+        b2Body* slab = scene.CreateBox(b2Vec2(0.0f, 1.0f), 2.0f, 0.1f, 0.5f);
+        slab->SetTransform(slab->GetPosition(), -5.0f * b2_pi / 180.0f);
+        slab->SetLinearVelocity(b2Vec2(vx, -3.0f));
+        EffectsConfig config = DefaultPreset();
+        TestWorld::StillSparks(config);
+        Effects& fx = scene.AttachSteelOnConcrete(config, ground, slab);
+        for (int i = 0; i < 60; ++i)
+        {
+            scene.Step();
+            for (const EffectEvent& event : fx.Events())
+            {
+                if (event.type == EffectEventType::impact && fx.Stats().rules[0].spawnedLastStep > 0)
+                {
+                    const ParticleView view = fx.Particles();
+                    const std::uint32_t last = view.count - 1;
+                    return std::pair{view.positionX[view.Slot(last)] - event.point.x,
+                                     slab->GetWorldPoint(b2Vec2(-2.0f, 0.0f)).x - event.point.x};
+                }
+            }
+        }
+        ADD_FAILURE() << "no burst";
+        return std::pair{0.0f, 0.0f};
+    };
+    const auto [slow, slowRear] = slam(1.0f);
+    EXPECT_GT(slow, 0.0f) << "beside the front corner, outward";
+    EXPECT_LT(slow, 0.1f);
+    for (const float vx : {2.5f, 4.0f, 6.0f})
+    {
+        EXPECT_LT(slam(vx).first, 0.0f) << vx << " m/s: behind the corner";
+    }
+    const auto [fast, fastRear] = slam(10.0f);
+    EXPECT_LT(fast, 0.0f) << "behind the corner, the side its slide's sparks start on (the first free place "
+                             "under the slab, or past its rear at "
+                          << fastRear << ")";
+
+    // A wheel rolling at 5 m/s (no slip) dropped 0.5 m onto the ground: its burst behind the contact.
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* wheel = scene.CreateCircle(b2Vec2(0.0f, 1.0f), 0.5f, 0.9f);
+    wheel->SetLinearVelocity(b2Vec2(5.0f, 0.0f));
+    wheel->SetAngularVelocity(-10.0f);
+    EffectsConfig config = DefaultPreset();
+    TestWorld::StillSparks(config);
+    Effects& fx = scene.AttachSteelOnConcrete(config, ground, wheel);
+    int bursts = 0;
+    for (int i = 0; i < 30 && bursts == 0; ++i)
+    {
+        scene.Step();
+        for (const EffectEvent& event : fx.Events())
+        {
+            if (event.type != EffectEventType::impact || fx.Stats().rules[0].spawnedLastStep == 0)
+            {
+                continue;
+            }
+            ++bursts;
+            const ParticleView view = fx.Particles();
+            for (std::uint32_t k = view.count - fx.Stats().rules[0].spawnedLastStep; k < view.count; ++k)
+            {
+                EXPECT_LT(view.positionX[view.Slot(k)], event.point.x) << "behind the rolling wheel";
+            }
+        }
+    }
+    EXPECT_EQ(bursts, 1);
+}
+
 } // namespace cfx::test
