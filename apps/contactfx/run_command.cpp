@@ -7,6 +7,7 @@
 #include "scenario.h"
 #include "sound_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -48,16 +49,22 @@ void PrintSummary(const Simulation& simulation, const RunOptions& options, const
                     i + 1 < config.particleTypes.size() ? "," : "");
     }
     std::printf("\n");
+    // What each rule emits, in one column as wide as the widest (up to 40 characters).
+    std::vector<std::string> types;
+    int typesWidth = 8;
+    for (const RuleDef& rule : config.rules)
+    {
+        types.push_back(rule.burstParticleType.empty() || rule.burstParticleType == rule.particleType
+                            ? rule.particleType
+                            : rule.particleType + ", bursts " + rule.burstParticleType);
+        typesWidth = std::max(typesWidth, static_cast<int>(std::min<std::size_t>(types.back().size(), 40)));
+    }
     for (std::size_t i = 0; i < config.rules.size(); ++i)
     {
         const RuleDef& rule = config.rules[i];
         const RuleStats& counts = stats.rules[i];
-        const std::string types =
-            rule.burstParticleType.empty() || rule.burstParticleType == rule.particleType
-                ? rule.particleType
-                : rule.particleType + ", bursts " + rule.burstParticleType;
-        std::printf("  %-18s -> %-8s at most %u contacts, %llu particles", PairName(rule).c_str(),
-                    types.c_str(), counts.contactsMax, static_cast<unsigned long long>(counts.spawned));
+        std::printf("  %-18s -> %-*s at most %u contacts, %llu particles", PairName(rule).c_str(), typesWidth,
+                    types[i].c_str(), counts.contactsMax, static_cast<unsigned long long>(counts.spawned));
         if (counts.spawnRejected > 0) // no free start near the contact: a pile, a crevice, a thin pane
         {
             std::printf(", %llu not started (no free place)",

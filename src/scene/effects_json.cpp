@@ -269,8 +269,8 @@ std::string ElsewhereNote(std::string_view key, std::string_view path)
     return note.empty() ? note : note + ")";
 }
 
-// Reports fields that no table knows, naming the section where a field of that name belongs, else the
-// nearest known one.
+// Reports fields that no table knows, naming the nearest known one, else the sections where a field of
+// that name belongs.
 void CheckKnownKeys(const Json& object, const std::string& path, std::span<const std::string_view> names,
                     DiagnosticList& diagnostics)
 {
@@ -278,7 +278,10 @@ void CheckKnownKeys(const Json& object, const std::string& path, std::span<const
     {
         if (std::find(names.begin(), names.end(), it.key()) == names.end())
         {
-            const std::string elsewhere = ElsewhereNote(it.key(), path);
+            // A near key of this object first (`material` in a rule is a typo of `materialA` more likely than
+            // an assignment's field written in a rule).
+            const std::string elsewhere =
+                scene_detail::NearestKey(it.key(), names) ? std::string() : ElsewhereNote(it.key(), path);
             diagnostics.Add(scene_detail::JoinPath(path, it.key()),
                             elsewhere.empty() ? scene_detail::UnknownKeyMessage(it.key(), names, "field", "")
                                               : "unknown field here" + elsewhere);

@@ -1,5 +1,7 @@
 #include "scene/json_reader.h"
 
+#include "quoted_text.h"
+
 #include <algorithm>
 #include <bit>
 #include <charconv>
@@ -148,13 +150,15 @@ std::vector<Diagnostic> DiagnosticList::TakeWarnings()
 
 std::string JoinPath(std::string_view base, std::string_view key)
 {
+    // A key from the file may hold a line break: escaped, a problem stays one line.
+    const std::string escaped = detail::EscapedText(key);
     if (base.empty())
     {
-        return std::string(key);
+        return escaped;
     }
     std::string path;
-    path.reserve(base.size() + 1 + key.size());
-    path.append(base).append(".").append(key);
+    path.reserve(base.size() + 1 + escaped.size());
+    path.append(base).append(".").append(escaped);
     return path;
 }
 

@@ -73,6 +73,8 @@ inline constexpr NumberLimits kPositive{0.0, std::numeric_limits<double>::infini
 inline constexpr NumberLimits kCoordinate{-kMaxCoordinate, kMaxCoordinate, false};
 inline constexpr NumberLimits kLength{0.0, kMaxCoordinate, false};
 
+/// "base.key" ("key" when base is empty), the key escaped as detail::EscapedText escapes it: a key from a
+/// file may hold a line break, and a problem is one line.
 std::string JoinPath(std::string_view base, std::string_view key);
 std::string IndexPath(std::string_view base, std::size_t index);
 

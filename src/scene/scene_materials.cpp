@@ -66,6 +66,7 @@ std::optional<MaterialId> MaterialProperty(const CustomProperties& properties, c
                                            std::vector<Diagnostic>& problems)
 {
     std::optional<MaterialId> found;
+    std::size_t first = 0; // the property `found` came from
     for (std::size_t k = 0; k < properties.items.size(); ++k)
     {
         const CustomProperty& property = properties.items[k];
@@ -82,7 +83,15 @@ std::optional<MaterialId> MaterialProperty(const CustomProperties& properties, c
             }
             continue;
         }
+        if (found)
+        {
+            problems.push_back({std::string(file), path + ".name",
+                                "a second `material` property (the first is customProperties[" +
+                                    std::to_string(first) + "])"});
+            continue;
+        }
         found = MaterialId{};
+        first = k;
         const std::string* name = std::get_if<std::string>(&property.value);
         if (name == nullptr)
         {

@@ -135,6 +135,10 @@ std::vector<BadFile> BadFiles()
              {"materialA": "a+b", "materialB": "c", "particleType": "p"},
              {"materialA": "a", "materialB": "b+c", "particleType": "p"}]})",
          "rules[1]", "the pair name \"a+b+c\" is also rules[0]'s"},
+        {"line_break_in_a_key.effects.json",
+         Effects(
+             R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks", "lifetime\n": 2})"),
+         "rules[0].lifetime\\n", "unknown field"},
         {"misspelt_material.effects.json",
          Effects(R"({"materialA": "steel", "materialB": "stnoe", "particleType": "sparks"})"),
          "rules[0].materialB",
@@ -149,6 +153,9 @@ std::vector<BadFile> BadFiles()
          Effects(
              R"({"materialA": "steel", "materialB": "stone", "particleType": "sparks", "speed": "full"})"),
          "rules[0].speed", "unknown field here (a field of rules[].intensity)"},
+        {"near_key_first.effects.json",
+         Effects(R"({"material": "steel", "materialB": "stone", "particleType": "sparks"})"),
+         "rules[0].material", "unknown field, did you mean `materialA`?"},
         {"rule_field_in_type.effects.json",
          R"({"materials": ["steel"], "particleTypes": [{"name": "sparks", "materialA": "steel"}]})",
          "particleTypes[0].materialA", "unknown field here (a field of rules[] and of sound.rules[])"},

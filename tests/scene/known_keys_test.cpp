@@ -1,6 +1,7 @@
 // Unknown keys: warnings naming the nearest known key in scenes, errors in effects configs; a scene given as
 // an effects config (or the reverse) is one error that says so.
 #include "contactfx/scene/effects_json.h"
+#include "nearest_name.h"
 #include "scene/known_keys.h"
 #include "scene/rube_test_util.h"
 
@@ -27,6 +28,52 @@ std::vector<Diagnostic> WarningsOf(const std::string& json)
         EXPECT_EQ(warning.file, "scene.json");
     }
     return warnings;
+}
+
+// A trial's config of 20,000 materials with rules naming unknown ones took minutes to validate: every
+// suggestion compared the name with every material. The suggestions of one file now spend a bounded
+// budget of comparisons; every problem is still reported, the hints past the budget are left out.
+TEST(NearestKey, SuggestionsSpendABoundedBudget)
+{
+    detail::SuggestionBudget budget{100};
+    const std::vector<std::string> materials = {"steel", "stone"};
+    EXPECT_EQ(detail::DidYouMean("stel", materials, budget), ", did you mean \"steel\"?");
+    EXPECT_EQ(budget.cells, 100u - 2u * 5u * 6u) << "(4 + 1) x (5 + 1) cells for each material";
+    detail::SuggestionBudget spent{59};
+    EXPECT_EQ(detail::DidYouMean("stel", materials, spent), "") << "not enough for both";
+    EXPECT_EQ(spent.cells, 59u) << "kept for shorter ones";
+
+    EffectsConfig config;
+    const auto name = [](char first, int i)
+    {
+        const std::string digits = std::to_string(100000 + i); // 6 characters, the first left out
+        return first + digits.substr(1);
+    };
+    for (int i = 0; i < 20000; ++i)
+    {
+        config.materials.push_back(name('m', i));
+    }
+    config.particleTypes.push_back(ParticleTypeDef{});
+    config.particleTypes.back().name = "p";
+    for (int i = 0; i < 200; ++i)
+    {
+        RuleDef rule;
+        rule.materialA = name('m', i);
+        rule.materialB = name('x', i); // one edit from its 'm' name
+        rule.particleType = "p";
+        config.rules.push_back(rule);
+    }
+    std::size_t unknown = 0;
+    std::size_t hinted = 0;
+    for (const Diagnostic& problem : Validate(config, "many.json"))
+    {
+        unknown += problem.message.find("unknown material") != std::string::npos ? 1 : 0;
+        hinted += problem.message.find("did you mean") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_EQ(unknown, 200u);
+    // Each hint compares a name of 6 characters with 20,000 of 6: 7 x 7 x 20,000 = 980,000 cells, so the
+    // budget of 50,000,000 holds 51 of them.
+    EXPECT_EQ(hinted, 51u);
 }
 
 TEST(NearestKey, FindsTyposOnly)

@@ -168,6 +168,16 @@ TEST(SceneMaterials, ABodysMaterialGoesToItsFixturesWithoutOne)
         ResolveErrors(LoadRubeString(test::World(bad), "scene.json"), config);
     EXPECT_TRUE(test::HasDiagnostic(problems, "body[0].customProperties[0].string", "unknown material \"d\""))
         << test::Dump(problems);
+
+    // Two `material` properties on one object: which one is meant? (The last one silently won.)
+    const std::string twice =
+        R"({"type": 2, "position": 0, "awake": true, "customProperties": [{"name": "material", "string": "a"},
+            {"name": "material", "string": "b"}], "fixture": [{"density": 1, "circle": {"radius": 1}}]})";
+    const std::vector<Diagnostic> both =
+        ResolveErrors(LoadRubeString(test::World(twice), "scene.json"), config);
+    EXPECT_TRUE(test::HasDiagnostic(both, "body[0].customProperties[1].name",
+                                    "a second `material` property (the first is customProperties[0])"))
+        << test::Dump(both);
 }
 
 // A trial's scenes failed on properties of their own whose names are near `material` ("materialId",
