@@ -11,12 +11,14 @@
 #include "vector_text.h"
 
 #include <algorithm>
+#include <atomic>
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace cfx
 {
@@ -166,6 +168,8 @@ struct Effects::Internals
     // While the destructor destroys the particle bodies (the application's destruction listener may call
     // in): Step does nothing then.
     bool destroying = false;
+    // The thread in Step (none: the default id).
+    std::atomic<std::thread::id> stepping;
     FixtureMaterials materials;
     ContactTracker tracker;
     Destruction destruction;
@@ -267,13 +271,40 @@ void Effects::Step(float dt)
     {
         return; // called by the application's destruction listener from the destructor: no step to take
     }
-    // Checked before anything changes (the particle system checks again, for its own users).
-    if (m_internals->notifying != nullptr)
+    // One Step at a time: two threads stepping one Effects at once deadlocked its helper threads (or raced
+    // with one thread), and a listener stepping it from inside a Step would hand on the events of the step
+    // that called it while the next one replaced them.
+    const std::thread::id self = std::this_thread::get_id();
+    std::thread::id idle;
+    if (!m_internals->stepping.compare_exchange_strong(idle, self))
     {
+        if (idle != self)
+        {
+            throw InputError(
+                "<api>", "thread",
+                "Effects::Step called on one thread while another thread steps the same Effects: "
+                "an Effects is stepped by one thread at a time");
+        }
         throw InputError("<api>", "listener",
-                         "Effects::Step called from the event listener: it is handing on the events of the "
-                         "step that called it");
+                         m_internals->notifying != nullptr
+                             ? "Effects::Step called from the event listener: it is handing on the events of "
+                               "the step that called it"
+                             : "Effects::Step called from a listener during a Step of the same Effects");
     }
+    // Let go on the way out, unless NotifyListener took it over (the listener may destroy this Effects).
+    struct Stepping
+    {
+        std::atomic<std::thread::id>& stepping;
+        bool handedOver = false;
+        ~Stepping()
+        {
+            if (!handedOver)
+            {
+                stepping.store(std::thread::id());
+            }
+        }
+    } stepping{m_internals->stepping};
+    // Checked before anything changes (the particle system checks again, for its own users).
     detail::CheckStepTime(dt);
     if (!m_world.GetGravity().IsValid())
     {
@@ -313,6 +344,7 @@ void Effects::Step(float dt)
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
     m_stats.staticGeometryBuilds = m_particles.StaticGeometryBuilds();
     m_stats.staleMaterials = m_internals->materials.Stale();
+    stepping.handedOver = true;
     NotifyListener();
 }
 
@@ -355,25 +387,28 @@ void Effects::EndScrapes()
 
 void Effects::NotifyListener()
 {
-    if (m_eventListener == nullptr)
-    {
-        return;
-    }
     // The listener may destroy this Effects (a level torn down on an event): the destructor sets
-    // `destroyed`, and the delivery then returns without touching what was freed.
+    // `destroyed`, and the delivery then returns without touching what was freed. Otherwise it ends Step's
+    // hold (Internals::stepping), which it took over.
     bool destroyed = false;
     struct Delivery
     {
         bool& destroyed;
         bool*& notifying;
+        std::atomic<std::thread::id>& stepping;
         ~Delivery()
         {
             if (!destroyed)
             {
                 notifying = nullptr;
+                stepping.store(std::thread::id());
             }
         }
-    } delivery{destroyed, m_internals->notifying};
+    } delivery{destroyed, m_internals->notifying, m_internals->stepping};
+    if (m_eventListener == nullptr)
+    {
+        return;
+    }
     m_internals->notifying = &destroyed;
     // By index, each event copied: the listener may end the scrapes (EndScrapes), which appends to the
     // events and may move them; and it may replace or remove itself (SetEventListener), which takes effect

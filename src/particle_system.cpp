@@ -400,7 +400,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
     impl.steps.resize(impl.types.size());
     impl.pendingLifeLoss.assign(impl.types.size(), 0.0);
     impl.policy = budget.recycle;
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    const unsigned hardware = particles::UsableHardwareThreads();
     impl.threads = std::clamp(options.threads == 0 ? hardware : options.threads, 1u, kMaxThreads);
     impl.minPerThread = std::max<std::uint32_t>(1, options.minParticlesPerThread);
     impl.staticWatch =

@@ -28,8 +28,12 @@
 // destruction listener it forgets fixtures destroyed with their body and notices when the application
 // destroys the Box2D body of a body-backed particle: that particle goes, and its body is never destroyed
 // twice.
-// Threading: one thread, the one that steps the world. Effects on different worlds are independent: each
-// may be created, stepped and destroyed on its own thread, at the same time as the others.
+// Threading: one thread at a time, the one that steps the world (a Step while another thread steps the same
+// Effects throws InputError). Effects on different worlds are independent: each may be created, stepped and
+// destroyed on its own thread, at the same time as the others (Box2D 2.4.1 itself keeps process-wide
+// statistics counters, b2_gjkCalls and b2_toiCalls, that concurrent world steps update without locks:
+// ThreadSanitizer reports them in a Box2D built with it; they change no result). Stepping several worlds
+// at once, give each ParticleSystemOptions::threads 1.
 #pragma once
 
 #include "contactfx/config.h"
@@ -160,7 +164,7 @@ public:
 private:
     friend struct detail::EffectsAccess; // the library's own tests and tools (src/effects_access.h)
     struct Internals;      // materials table, contact tracker, listeners, emitter, event tracker
-    void NotifyListener(); // gives the event listener every event of Events()
+    void NotifyListener(); // gives the event listener every event of Events(); ends Step's hold
     /// Throws SetMaterial's InputError for a null `target` (named `targetField`) or a material id that is
     /// neither invalid nor one of the config's.
     void CheckMaterialArguments(const void* target, const char* targetField, MaterialId material) const;

@@ -91,13 +91,13 @@ struct EffectEvent
     std::uint32_t count = 0;     ///< particle hits: how many particles hit (>= 1)
 };
 
-/// Receives every event of a step, in order, at the end of Effects::Step; `event` is valid during the
-/// call. It may read the world but must not step it or destroy bodies, nor step the Effects (that throws
-/// InputError, field "listener"). It may call Effects::EndScrapes: the scrape ends then follow the step's
-/// events, in Events() too, and it hears them after the rest, each event once. It may replace or remove
-/// itself (Effects::SetEventListener): the new listener, or none, has the events after the current one. It
-/// may destroy the Effects (a level torn down on an event): it then hears no more events of the step, and
-/// Effects::Step (or EndScrapes) returns without touching the destroyed Effects.
+/// Receives every event of a step, in order, at the end of Effects::Step, on the thread that called Step;
+/// `event` is valid during the call. It may read the world but must not step it or destroy bodies, nor step
+/// the Effects (that throws InputError, field "listener"). It may call Effects::EndScrapes: the scrape ends
+/// then follow the step's events, in Events() too, and it hears them after the rest, each event once. It may
+/// replace or remove itself (Effects::SetEventListener): the new listener, or none, has the events after the
+/// current one. It may destroy the Effects (a level torn down on an event): it then hears no more events of
+/// the step, and Effects::Step (or EndScrapes) returns without touching the destroyed Effects.
 class EffectEventListener
 {
 public:

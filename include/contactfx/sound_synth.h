@@ -17,6 +17,8 @@
 // Deterministic: every noise source is a seeded PCG32 of our own (seed and voice id), every sine and tangent
 // a polynomial of our own, so the same voices, times and seed give the same samples bit for bit.
 // Allocation: none per Render once `maxVoices` voices have sounded, besides growing the caller's buffer.
+// Threading: one thread at a time per synthesizer (an audio thread may own one, fed the voices through the
+// application's own queue); synthesizers are independent of each other and of the Effects.
 #pragma once
 
 #include "contactfx/config.h"

@@ -23,6 +23,10 @@
 namespace cfx::particles
 {
 
+/// The hardware threads this process may run on: those of its CPU affinity (taskset, a container's
+/// cpuset), where the system tells it (Linux), else std::thread::hardware_concurrency(); at least 1.
+unsigned UsableHardwareThreads();
+
 class Workers
 {
 public:

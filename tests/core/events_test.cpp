@@ -3,6 +3,8 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <map>
+#include <thread>
+#include <utility>
 
 namespace cfx::test
 {
@@ -427,6 +429,51 @@ TEST(Events, TheListenerMayNotStepTheEffects)
     EXPECT_EQ(stepping.effects, nullptr) << "the listener was called";
     scene.effects->SetEventListener(nullptr);
     scene.Step(); // the effects still step afterwards
+}
+
+// A trial's job system stepped one Effects from two threads at once: with helper threads it deadlocked, with
+// one it raced. A Step while another thread steps the same Effects is refused; one thread after another is
+// fine.
+TEST(Events, AnotherThreadMayNotStepTheEffectsDuringAStep)
+{
+    struct FromAnotherThread final : public EffectEventListener
+    {
+        void OnEffectEvent(const EffectEvent&) override
+        {
+            if (effects == nullptr)
+            {
+                return;
+            }
+            Effects* stepped = std::exchange(effects, nullptr);
+            std::thread(
+                [&]
+                {
+                    try
+                    {
+                        stepped->Step(1.0f / 60.0f);
+                    }
+                    catch (const InputError& error)
+                    {
+                        message = error.what();
+                    }
+                })
+                .join();
+        }
+        Effects* effects = nullptr;
+        std::string message;
+    } other;
+    ScrapeScene scene;
+    other.effects = scene.effects.get();
+    scene.effects->SetEventListener(&other);
+    scene.Slide(4.0f, 10);
+    EXPECT_EQ(other.effects, nullptr) << "the listener was called";
+    EXPECT_NE(other.message.find("another thread steps the same Effects"), std::string::npos)
+        << other.message;
+    scene.effects->SetEventListener(nullptr);
+    const std::uint64_t steps = scene.effects->Stats().steps;
+    std::thread([&] { scene.Step(); }).join();
+    scene.Step();
+    EXPECT_EQ(scene.effects->Stats().steps, steps + 2) << "stepped by one thread, then another";
 }
 
 // A one-way platform: the application disables the platform's contacts while the block is below its top.
