@@ -177,6 +177,51 @@ struct Effects::Internals
     detail::EventTracker events;
 };
 
+namespace
+{
+
+// Internals::stepping for one call of Step or EndScrapes: taken for this thread, or found taken by this
+// thread already (a listener called inside a Step). Held by another thread, it throws InputError (field
+// "thread"): an Effects is used by one thread at a time. Let go when the call ends, unless handed over to
+// NotifyListener (whose listener may destroy the Effects).
+class Hold
+{
+public:
+    Hold(std::atomic<std::thread::id>& stepping, const char* call) : m_stepping(stepping)
+    {
+        const std::thread::id self = std::this_thread::get_id();
+        std::thread::id idle;
+        m_taken = stepping.compare_exchange_strong(idle, self);
+        if (!m_taken && idle != self)
+        {
+            throw InputError(
+                "<api>", "thread",
+                std::string(call) +
+                    " called on one thread while another thread steps the same Effects: an Effects "
+                    "is stepped by one thread at a time");
+        }
+    }
+    ~Hold()
+    {
+        if (m_taken && !m_handedOver)
+        {
+            m_stepping.store(std::thread::id());
+        }
+    }
+    Hold(const Hold&) = delete;
+    Hold& operator=(const Hold&) = delete;
+
+    bool Taken() const { return m_taken; }
+    void HandOver() { m_handedOver = true; }
+
+private:
+    std::atomic<std::thread::id>& m_stepping;
+    bool m_taken = false;
+    bool m_handedOver = false;
+};
+
+} // namespace
+
 Effects::Effects(b2World& world, const EffectsDef& def)
     : m_world(world), m_config(Checked(def.config)), m_rules(BuildRuleTable(m_config)),
       m_particles(world, m_config.particleTypes, m_config.budget, def.particles),
@@ -274,36 +319,15 @@ void Effects::Step(float dt)
     // One Step at a time: two threads stepping one Effects at once deadlocked its helper threads (or raced
     // with one thread), and a listener stepping it from inside a Step would hand on the events of the step
     // that called it while the next one replaced them.
-    const std::thread::id self = std::this_thread::get_id();
-    std::thread::id idle;
-    if (!m_internals->stepping.compare_exchange_strong(idle, self))
+    Hold hold(m_internals->stepping, "Effects::Step");
+    if (!hold.Taken())
     {
-        if (idle != self)
-        {
-            throw InputError(
-                "<api>", "thread",
-                "Effects::Step called on one thread while another thread steps the same Effects: "
-                "an Effects is stepped by one thread at a time");
-        }
         throw InputError("<api>", "listener",
                          m_internals->notifying != nullptr
                              ? "Effects::Step called from the event listener: it is handing on the events of "
                                "the step that called it"
                              : "Effects::Step called from a listener during a Step of the same Effects");
     }
-    // Let go on the way out, unless NotifyListener took it over (the listener may destroy this Effects).
-    struct Stepping
-    {
-        std::atomic<std::thread::id>& stepping;
-        bool handedOver = false;
-        ~Stepping()
-        {
-            if (!handedOver)
-            {
-                stepping.store(std::thread::id());
-            }
-        }
-    } stepping{m_internals->stepping};
     // Checked before anything changes (the particle system checks again, for its own users).
     detail::CheckStepTime(dt);
     if (!m_world.GetGravity().IsValid())
@@ -344,7 +368,7 @@ void Effects::Step(float dt)
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
     m_stats.staticGeometryBuilds = m_particles.StaticGeometryBuilds();
     m_stats.staleMaterials = m_internals->materials.Stale();
-    stepping.handedOver = true;
+    hold.HandOver();
     NotifyListener();
 }
 
@@ -374,22 +398,24 @@ void Effects::ShiftOrigin(b2Vec2 newOrigin)
 
 void Effects::EndScrapes()
 {
-    if (m_internals->notifying != nullptr)
+    Hold hold(m_internals->stepping, "Effects::EndScrapes");
+    if (!hold.Taken())
     {
-        // Called by the event listener: the scrape ends follow the events being delivered, which the
-        // delivery loop then hands on too (each event once).
+        // Called by a listener during a Step (or its delivery of events) on this thread: the scrape ends
+        // follow the step's events, which the delivery then hands on too (each event once).
         m_internals->events.EndAll(ScrapeEnd::stopped, detail::EventTracker::Keep::events);
         return;
     }
     m_internals->events.EndAll(ScrapeEnd::stopped, detail::EventTracker::Keep::none);
+    hold.HandOver();
     NotifyListener();
 }
 
 void Effects::NotifyListener()
 {
     // The listener may destroy this Effects (a level torn down on an event): the destructor sets
-    // `destroyed`, and the delivery then returns without touching what was freed. Otherwise it ends Step's
-    // hold (Internals::stepping), which it took over.
+    // `destroyed`, and the delivery then returns without touching what was freed. Otherwise it ends the
+    // hold of the Step or EndScrapes that called it (Hold::HandOver).
     bool destroyed = false;
     struct Delivery
     {

@@ -122,7 +122,10 @@ public:
     /// quits): Events() then holds one scrapeEnded per open scrape, reason ScrapeEnd::stopped, in id
     /// order, with the scrape's last point and normal and the last step's number, and the event listener
     /// gets them. So every scrapeBegan has its scrapeEnded, and a sound looping on a scrape stops. Nothing
-    /// else changes: a contact still scraping at the next Step begins a new scrape, with a new id.
+    /// else changes: a contact still scraping at the next Step begins a new scrape, with a new id. Called by
+    /// a listener during a Step (the event listener, or the destruction listener as particle bodies go),
+    /// the ends follow that step's events and the event listener hears them with the rest. Throws
+    /// InputError (field "thread") when another thread steps this Effects.
     void EndScrapes();
 
     /// Call right after b2World::ShiftOrigin(newOrigin), with the same vector (m): the particles (pool

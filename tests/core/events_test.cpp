@@ -429,6 +429,57 @@ TEST(Events, TheListenerMayNotStepTheEffects)
     EXPECT_EQ(stepping.effects, nullptr) << "the listener was called";
     scene.effects->SetEventListener(nullptr);
     scene.Step(); // the effects still step afterwards
+
+    // Nor from the delivery of EndScrapes' events (a trial's listener stepped the Effects from there: the
+    // hold on Step was let go by EndScrapes, and a nested Step destroyed particle bodies twice).
+    scene.Slide(4.0f, 10);
+    stepping.effects = scene.effects.get();
+    scene.effects->SetEventListener(&stepping);
+    EXPECT_THROW(scene.effects->EndScrapes(), InputError);
+    EXPECT_EQ(stepping.effects, nullptr) << "the listener was called";
+    scene.effects->SetEventListener(nullptr);
+    scene.Step();
+}
+
+// EndScrapes from the destruction listener as a particle body goes, inside a Step: the ends follow that
+// step's events (a trial's listener ended the scrapes there and the events were handed on in the middle of
+// the step).
+TEST(Events, EndScrapesDuringAStepEndsThemWithThatStepsEvents)
+{
+    class Ending final : public b2DestructionListener
+    {
+    public:
+        void SayGoodbye(b2Joint*) override {}
+        void SayGoodbye(b2Fixture*) override
+        {
+            if (effects != nullptr)
+            {
+                std::exchange(effects, nullptr)->EndScrapes();
+            }
+        }
+        Effects* effects = nullptr;
+    } ending;
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.AttachSteelOnConcrete(TutorialPreset(), ground, box); // body-backed sparks
+    fx.SetDestructionListener(&ending);
+    bool ended = false;
+    for (int i = 0; i < 600 && !ended; ++i)
+    {
+        box->SetLinearVelocity(b2Vec2(6.0f, box->GetLinearVelocity().y));
+        box->SetAngularVelocity(0.0f);
+        ending.effects = i == 60 ? &fx : ending.effects; // from the 60th step on, at the first goodbye
+        scene.Step();
+        for (const EffectEvent& event : fx.Events())
+        {
+            ended = ended || (event.type == EffectEventType::scrapeEnded && event.end == ScrapeEnd::stopped);
+        }
+    }
+    EXPECT_TRUE(ended) << "the stopped scrape is among a step's events";
+    EXPECT_EQ(ending.effects, nullptr) << "a particle body went";
+    fx.SetDestructionListener(nullptr);
+    scene.Step();
 }
 
 // A trial's job system stepped one Effects from two threads at once: with helper threads it deadlocked, with
