@@ -25,6 +25,12 @@ std::string EscapedText(std::string_view text)
             ++i;
             continue;
         }
+        if (control == 3) // U+2028 LINE SEPARATOR, U+2029 PARAGRAPH SEPARATOR: line breaks to some editors
+        {
+            quoted += text[i + 2] == '\xa8' ? "\\u2028" : "\\u2029";
+            i += 2;
+            continue;
+        }
         switch (c)
         {
         case '"':
@@ -66,6 +72,11 @@ std::size_t ControlCharacterBytes(std::string_view text, std::size_t i)
         return 1;
     }
     const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0u;
+    const auto third = i + 2 < text.size() ? static_cast<unsigned char>(text[i + 2]) : 0u;
+    if (byte == 0xe2 && next == 0x80 && (third == 0xa8 || third == 0xa9))
+    {
+        return 3;
+    }
     return byte == 0xc2 && next >= 0x80 && next <= 0x9f ? 2 : 0;
 }
 

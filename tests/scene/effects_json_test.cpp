@@ -352,7 +352,7 @@ TEST(EffectsJson, AColoursRangeProblemsComeWithItsWrongKindOfElement)
 TEST(EffectsJson, NamesWithControlCharactersAreRefusedAndQuotedEscaped)
 {
     const std::vector<std::string> problems = ProblemsOf(
-        R"({"name": "x\ny.effects.json: ok", "materials": ["a\nb: ok", "st\u0000eel", "gl\u0085ass", "gl\u009bass", "gl\u00a0ass"], "particleTypes": [{"name": "p\tq"}],
+        R"({"name": "x\ny.effects.json: ok", "materials": ["a\nb: ok", "st\u0000eel", "gl\u0085ass", "gl\u009bass", "gl\u00a0ass", "li\u2028ne"], "particleTypes": [{"name": "p\tq"}],
             "rules": [{"materialA": "a\nb: ok", "materialB": "zz\nfake.json: ok", "particleType": "p\tq"}]})");
     const std::vector<std::string> expected = {
         "name: expected a name without control characters, found \"x\\ny.effects.json: ok\"",
@@ -360,10 +360,11 @@ TEST(EffectsJson, NamesWithControlCharactersAreRefusedAndQuotedEscaped)
         "materials[1]: expected a name without control characters, found \"st\\u0000eel\"",
         "materials[2]: expected a name without control characters, found \"gl\\u0085ass\"",
         "materials[3]: expected a name without control characters, found \"gl\\u009bass\"",
+        "materials[5]: expected a name without control characters, found \"li\\u2028ne\"",
         "particleTypes[0].name: expected a name without control characters, found \"p\\tq\"",
         "rules[0].materialB: unknown material \"zz\\nfake.json: ok\" (materials: a\\nb: ok, st\\u0000eel, "
         "gl\\u0085ass, gl\\u009bass, gl\xC2\xA0"
-        "ass)"};
+        "ass, li\\u2028ne)"};
     EXPECT_EQ(problems, expected);
 }
 
