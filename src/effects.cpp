@@ -328,6 +328,12 @@ void Effects::Step(float dt)
                                "the step that called it"
                              : "Effects::Step called from a listener during a Step of the same Effects");
     }
+    if (m_world.IsLocked())
+    {
+        throw InputError("<api>", "listener",
+                         "Effects::Step called inside b2World::Step (from a contact listener): call it after "
+                         "b2World::Step returns");
+    }
     // Checked before anything changes (the particle system checks again, for its own users).
     detail::CheckStepTime(dt);
     if (!m_world.GetGravity().IsValid())

@@ -116,7 +116,9 @@ public:
     /// particles still meet the bodies as moving with their velocities over dt (a trial's 0.5 s step threw
     /// smoke off a paused spinning wheel at up to 38 m/s): in a pause, step with the usual dt or not at all.
     /// Throws InputError (file "<api>", field "dt" or "gravity") when dt is not finite and > 0 or the
-    /// world's gravity is not finite; nothing changes then.
+    /// world's gravity is not finite, (field "listener") when called from a listener during a Step of this
+    /// Effects or inside b2World::Step, and (field "thread") while another thread steps it; nothing changes
+    /// then.
     void Step(float dt);
     /// Ends every scrape going on, for an application that stops stepping (a level ends, the game
     /// quits): Events() then holds one scrapeEnded per open scrape, reason ScrapeEnd::stopped, in id

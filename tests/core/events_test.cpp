@@ -441,6 +441,45 @@ TEST(Events, TheListenerMayNotStepTheEffects)
     scene.Step();
 }
 
+// A trial's contact listener stepped the Effects inside b2World::Step, where Box2D's world is locked (no
+// body may be created or destroyed, and the contacts are half updated): refused.
+TEST(Events, AContactListenerMayNotStepTheEffects)
+{
+    class Stepping final : public b2ContactListener
+    {
+    public:
+        void BeginContact(b2Contact*) override
+        {
+            if (effects == nullptr)
+            {
+                return;
+            }
+            try
+            {
+                std::exchange(effects, nullptr)->Step(1.0f / 60.0f);
+            }
+            catch (const InputError& error)
+            {
+                message = error.what();
+            }
+        }
+        Effects* effects = nullptr;
+        std::string message;
+    } stepping;
+    TestWorld scene;
+    b2Body* ground = scene.CreateGround();
+    b2Body* box = scene.CreateBox(b2Vec2(0.0f, 2.0f), 0.5f, 0.5f, 0.5f);
+    Effects& fx = scene.AttachSteelOnConcrete(DefaultPreset(), ground, box, &stepping);
+    stepping.effects = &fx;
+    for (int i = 0; i < 60; ++i)
+    {
+        scene.Step();
+    }
+    EXPECT_EQ(stepping.effects, nullptr) << "the box landed";
+    EXPECT_NE(stepping.message.find("inside b2World::Step"), std::string::npos) << stepping.message;
+    EXPECT_EQ(fx.Stats().steps, 60u);
+}
+
 // EndScrapes from the destruction listener as a particle body goes, inside a Step: the ends follow that
 // step's events (a trial's listener ended the scrapes there and the events were handed on in the middle of
 // the step).
