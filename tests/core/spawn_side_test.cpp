@@ -9,6 +9,37 @@
 
 namespace cfx::test
 {
+namespace
+{
+
+// Steps `scene` up to `steps` times, or until the first burst when `untilFirst`; for each impact of a step
+// that spawned particles of rule 0, calls check(event, view, slot) for each of the step's new particles.
+// Returns how many such impacts there were.
+template <class Check> int EachBurst(TestWorld& scene, Effects& fx, int steps, bool untilFirst, Check&& check)
+{
+    int bursts = 0;
+    for (int i = 0; i < steps && !(untilFirst && bursts > 0); ++i)
+    {
+        scene.Step();
+        const std::uint32_t spawned = fx.Stats().rules[0].spawnedLastStep;
+        for (const EffectEvent& event : fx.Events())
+        {
+            if (event.type != EffectEventType::impact || spawned == 0)
+            {
+                continue;
+            }
+            ++bursts;
+            const ParticleView view = fx.Particles();
+            for (std::uint32_t k = view.count - spawned; k < view.count; ++k)
+            {
+                check(event, view, view.Slot(k));
+            }
+        }
+    }
+    return bursts;
+}
+
+} // namespace
 
 TEST(SpawnSide, AWheelSpinningInPlaceThrowsFromWhereItsRimRisesAtEveryStepRate)
 {
@@ -225,29 +256,16 @@ TEST(SpawnSide, AFlatLandingsBurstStartsBesideTheCornerThatStruck)
             EffectsConfig config = DefaultPreset();
             TestWorld::StillSparks(config);
             Effects& fx = scene.AttachSteelOnConcrete(config, ground, box);
-            int bursts = 0;
-            for (int i = 0; i < 90; ++i)
-            {
-                scene.Step();
-                for (const EffectEvent& event : fx.Events())
-                {
-                    if (event.type != EffectEventType::impact)
-                    {
-                        continue;
-                    }
-                    ++bursts;
-                    const ParticleView view = fx.Particles();
-                    const std::uint32_t spawned = fx.Stats().rules[0].spawnedLastStep;
-                    ASSERT_GT(spawned, 0u);
-                    for (std::uint32_t k = view.count - spawned; k < view.count; ++k)
-                    {
-                        const float x = view.positionX[view.Slot(k)];
-                        // Beside the corner, outside the box: within 5 cm of its side, on the corner's side.
-                        EXPECT_LT(std::abs(x - event.point.x), 0.05f) << "corner at " << event.point.x;
-                        EXPECT_GT(std::abs(x), 0.5f * width) << "outside the box";
-                    }
-                }
-            }
+            const int bursts =
+                EachBurst(scene, fx, 90, false,
+                          [&](const EffectEvent& event, const ParticleView& view, std::uint32_t slot)
+                          {
+                              const float x = view.positionX[slot];
+                              // Beside the corner, outside the box: within 5 cm of its side,
+                              // on the corner's side.
+                              EXPECT_LT(std::abs(x - event.point.x), 0.05f) << "corner at " << event.point.x;
+                              EXPECT_GT(std::abs(x), 0.5f * width) << "outside the box";
+                          });
             EXPECT_EQ(bursts, 1);
         }
     }
@@ -255,8 +273,8 @@ TEST(SpawnSide, AFlatLandingsBurstStartsBesideTheCornerThatStruck)
 
 // A trial dropped tilted slabs: the burst of the slam (the second corner striking, the hardest impact)
 // started at the slab's other end, 1 to 4 m from that corner, walked under the slab because the corner
-// crept 0.24 m/s along the ground. Motion along the surface slower than a tenth of the approach now tells
-// no side to a burst: every burst of a tilted landing starts beside its corner, outside the slab.
+// crept 0.24 m/s along the ground. An impact whose point slides slower than half its approach is a hit:
+// every burst of a tilted landing starts beside its corner, outside the slab.
 TEST(SpawnSide, ATiltedLandingsBurstsStartBesideTheCornersThatStruck)
 {
     for (const float width : {1.0f, 4.0f})
@@ -280,34 +298,21 @@ TEST(SpawnSide, ATiltedLandingsBurstsStartBesideTheCornersThatStruck)
                 config.rules[0].burstParticleType = "burst";
                 Effects& fx = scene.AttachSteelOnConcrete(config, ground, slab);
                 const std::uint16_t burstType = fx.Config().FindParticleType("burst").index;
-                int bursts = 0;
-                for (int i = 0; i < 90; ++i)
-                {
-                    scene.Step();
-                    for (const EffectEvent& event : fx.Events())
-                    {
-                        if (event.type != EffectEventType::impact || fx.Stats().rules[0].spawnedLastStep == 0)
-                        {
-                            continue;
-                        }
-                        ++bursts;
-                        const ParticleView view = fx.Particles();
-                        const std::uint32_t spawned = fx.Stats().rules[0].spawnedLastStep;
-                        for (std::uint32_t k = view.count - spawned; k < view.count; ++k)
-                        {
-                            if (view.type[view.Slot(k)] != burstType)
-                            {
-                                continue;
-                            }
-                            const b2Vec2 start(view.positionX[view.Slot(k)], view.positionY[view.Slot(k)]);
-                            EXPECT_LT(std::abs(start.x - event.point.x), 0.1f)
-                                << "corner at " << event.point.x;
-                            const b2Vec2 local = slab->GetLocalPoint(start);
-                            EXPECT_TRUE(std::abs(local.x) > 0.5f * width || std::abs(local.y) > 0.25f)
-                                << "outside the slab: " << start.x << ", " << start.y;
-                        }
-                    }
-                }
+                const int bursts =
+                    EachBurst(scene, fx, 90, false,
+                              [&](const EffectEvent& event, const ParticleView& view, std::uint32_t slot)
+                              {
+                                  if (view.type[slot] != burstType)
+                                  {
+                                      return;
+                                  }
+                                  const b2Vec2 start(view.positionX[slot], view.positionY[slot]);
+                                  EXPECT_LT(std::abs(start.x - event.point.x), 0.1f)
+                                      << "corner at " << event.point.x;
+                                  const b2Vec2 local = slab->GetLocalPoint(start);
+                                  EXPECT_TRUE(std::abs(local.x) > 0.5f * width || std::abs(local.y) > 0.25f)
+                                      << "outside the slab: " << start.x << ", " << start.y;
+                              });
                 EXPECT_GE(bursts, 2) << "the first corner, then the slam";
             }
         }
@@ -370,24 +375,10 @@ TEST(SpawnSide, ASlidingSlamBurstsAsItsSlideAndARollingWheelsLandingWhereItsRimR
     EffectsConfig config = DefaultPreset();
     TestWorld::StillSparks(config);
     Effects& fx = scene.AttachSteelOnConcrete(config, ground, wheel);
-    int bursts = 0;
-    for (int i = 0; i < 30 && bursts == 0; ++i)
-    {
-        scene.Step();
-        for (const EffectEvent& event : fx.Events())
-        {
-            if (event.type != EffectEventType::impact || fx.Stats().rules[0].spawnedLastStep == 0)
-            {
-                continue;
-            }
-            ++bursts;
-            const ParticleView view = fx.Particles();
-            for (std::uint32_t k = view.count - fx.Stats().rules[0].spawnedLastStep; k < view.count; ++k)
-            {
-                EXPECT_LT(view.positionX[view.Slot(k)], event.point.x) << "behind the rolling wheel";
-            }
-        }
-    }
+    const int bursts =
+        EachBurst(scene, fx, 30, true,
+                  [&](const EffectEvent& event, const ParticleView& view, std::uint32_t slot)
+                  { EXPECT_LT(view.positionX[slot], event.point.x) << "behind the rolling wheel"; });
     EXPECT_EQ(bursts, 1);
 }
 
