@@ -168,7 +168,7 @@ struct Effects::Internals
     // While the destructor destroys the particle bodies (the application's destruction listener may call
     // in): Step does nothing then.
     bool destroying = false;
-    // The thread in Step (none: the default id).
+    // The thread in Step or EndScrapes (none: the default id); see Hold.
     std::atomic<std::thread::id> stepping;
     FixtureMaterials materials;
     ContactTracker tracker;
