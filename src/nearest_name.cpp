@@ -45,33 +45,44 @@ std::size_t NearestLimit(std::string_view key)
     return std::min(std::max<std::size_t>(2, key.size() / 3), key.empty() ? 0 : (key.size() - 1) / 2);
 }
 
+// Whether `candidate` may be within `limit` edits of `key` by their lengths alone (more apart takes as many
+// insertions): the test that keeps a hostile 1 MB key cheap, and what a suggestion's cost counts.
+bool CloseInLength(std::string_view key, std::string_view candidate, std::size_t limit)
+{
+    return std::max(key.size(), candidate.size()) - std::min(key.size(), candidate.size()) <= limit;
+}
+
+std::string Lower(std::string_view text)
+{
+    std::string out(text);
+    for (char& c : out)
+    {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
 } // namespace
+
+std::size_t TypoDistance(std::string_view key, std::string_view candidate)
+{
+    // A case slip ("Gravity") is one edit, whatever its length.
+    const std::size_t folded = EditDistance(Lower(key), Lower(candidate));
+    return folded == 0 ? (candidate == key ? 0 : 1) : folded;
+}
 
 std::optional<std::string_view> NearestKey(std::string_view key, std::span<const std::string_view> known)
 {
-    auto lower = [](std::string_view text)
-    {
-        std::string out(text);
-        for (char& c : out)
-        {
-            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        }
-        return out;
-    };
     const std::size_t limit = NearestLimit(key);
-    const std::string wanted = lower(key);
     std::optional<std::string_view> nearest;
     std::size_t best = limit + 1;
     for (std::string_view candidate : known)
     {
-        const std::size_t longer = std::max(key.size(), candidate.size());
-        if (longer - std::min(key.size(), candidate.size()) > limit)
+        if (!CloseInLength(key, candidate, limit))
         {
-            continue; // at least that many insertions: too far (and cheap for a hostile 1 MB key)
+            continue;
         }
-        // A case slip ("Gravity") is one edit, whatever its length.
-        const std::size_t folded = EditDistance(wanted, lower(candidate));
-        const std::size_t distance = folded == 0 ? (candidate == key ? 0 : 1) : folded;
+        const std::size_t distance = TypoDistance(key, candidate);
         if (distance < best)
         {
             best = distance;
@@ -93,13 +104,12 @@ std::optional<std::string_view> NearestKey(std::string_view key, const std::vect
 
 std::string DidYouMean(std::string_view name, const std::vector<std::string>& known, SuggestionBudget& budget)
 {
-    // What NearestKey's table costs: every candidate its length test lets through (see NearestLimit).
+    // What NearestKey's tables cost: every candidate its length test lets through.
     const std::size_t limit = NearestLimit(name);
     std::size_t cells = 0;
     for (const std::string& candidate : known)
     {
-        const std::size_t longer = std::max(name.size(), candidate.size());
-        if (longer - std::min(name.size(), candidate.size()) <= limit)
+        if (CloseInLength(name, candidate, limit))
         {
             cells += (name.size() + 1) * (candidate.size() + 1);
             if (cells > budget.cells)

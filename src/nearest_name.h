@@ -14,6 +14,10 @@ namespace cfx::detail
 /// Edits turning `a` into `b` (insert, delete, replace, swap two neighbours: 1 each).
 std::size_t EditDistance(std::string_view a, std::string_view b);
 
+/// Edits from `key` to `candidate` as NearestKey counts them: EditDistance of the two in lower case, and a
+/// difference of case alone as one edit ("Gravity" is 1 from "gravity").
+std::size_t TypoDistance(std::string_view key, std::string_view candidate);
+
 /// The key of `known` nearest to `key` when near enough to be a typo of it (at most max(2, size / 3) edits,
 /// fewer than half its characters; case differences count as one edit); nothing otherwise (also when `key`
 /// itself is known).

@@ -12,7 +12,6 @@
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
-#include <cctype>
 #include <optional>
 #include <string>
 #include <variant>
@@ -49,12 +48,7 @@ std::string DescribeNonString(const CustomProperty& property)
 // properties: "materialId" or "subMaterial" are properties of their own.
 bool MisspeltMaterial(std::string_view name)
 {
-    std::string lower(name);
-    for (char& c : lower)
-    {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return name != "material" && detail::EditDistance(lower, "material") <= 1;
+    return detail::TypoDistance(name, "material") == 1;
 }
 
 // The material an object's (body's or fixture's) custom properties name: nullopt when it has no `material`
