@@ -102,8 +102,8 @@ int main()
     b2Fixture* crateFixture = crate->CreateFixture(&crateFixtureDef);
 
     cfx::Effects fx(world, cfx::EffectsDef{cfx::DefaultPreset()});
-    fx.SetMaterial(floorFixture, fx.FindMaterial("concrete"));
-    fx.SetMaterial(crateFixture, fx.FindMaterial("steel"));
+    fx.SetMaterial(floorFixture, "concrete");
+    fx.SetMaterial(crateFixture, "steel");
     const std::vector<std::string>& materials = fx.Config().materials;
     // "steel_concrete": the sound bank's name for a material pair.
     auto pairName = [&](const cfx::EffectEvent& event)

@@ -38,8 +38,8 @@ int main()
 
     // contactfx: one Effects per world, created after it and destroyed before it.
     cfx::Effects fx(world, cfx::EffectsDef{cfx::DefaultPreset()});
-    fx.SetMaterial(tyreFixture, fx.FindMaterial("rubber"));
-    fx.SetMaterial(roadFixture, fx.FindMaterial("concrete"));
+    fx.SetMaterial(tyreFixture, "rubber");
+    fx.SetMaterial(roadFixture, "concrete");
 
     const float dt = 1.0f / 60.0f;    // s
     const float engineSpeed = -40.0f; // rad/s, clockwise: the tyre's surface moves at 16 m/s

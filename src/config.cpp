@@ -5,7 +5,6 @@
 #include "nearest_name.h"
 #include "quoted_text.h"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -261,6 +260,37 @@ bool NoteRepeatedPair(Checker& check, MaterialPairs& seen, std::string_view list
     return !inserted;
 }
 
+// Materials, particle types and rules are each counted by a 16-bit id whose all-ones value means none.
+void CheckCount(Checker& check, std::string_view path, std::string_view what, std::size_t count)
+{
+    constexpr std::size_t kMaxCount = 0xFFFE; // MaterialId, ParticleTypeId and RuleId's kNone less one
+    static_assert(MaterialId::kNone == kMaxCount + 1 && ParticleTypeId::kNone == kMaxCount + 1 &&
+                  RuleId::kNone == kMaxCount + 1);
+    if (count > kMaxCount)
+    {
+        check.Fail(std::string(path), "expected at most " + std::to_string(kMaxCount) + " " +
+                                          std::string(what) + ", found " + std::to_string(count));
+    }
+}
+
+// A material's or particle type's name at `at`: not empty, no control characters, not one seen before.
+void CheckName(Checker& check, const std::string& at, std::string_view kind, const std::string& name,
+               std::set<std::string_view>& seen)
+{
+    if (name.empty())
+    {
+        check.Fail(at, "expected a non-empty name");
+    }
+    else if (detail::HasControlCharacter(name))
+    {
+        check.Fail(at, kNoControlCharacters + detail::QuotedText(name));
+    }
+    else if (!seen.insert(name).second)
+    {
+        check.Fail(at, "duplicate " + std::string(kind) + " " + detail::QuotedText(name));
+    }
+}
+
 } // namespace
 
 std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view file)
@@ -272,58 +302,24 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
     {
         check.Fail("name", kNoControlCharacters + detail::QuotedText(config.name));
     }
-    if (config.materials.size() >= MaterialId::kNone)
-    {
-        check.Fail("materials",
-                   "expected at most 65534 materials, found " + std::to_string(config.materials.size()));
-    }
+    CheckCount(check, "materials", "materials", config.materials.size());
     std::set<std::string_view> seen;
     for (std::size_t i = 0; i < config.materials.size(); ++i)
     {
-        const std::string at = "materials[" + std::to_string(i) + "]";
-        if (config.materials[i].empty())
-        {
-            check.Fail(at, "expected a non-empty name");
-        }
-        else if (detail::HasControlCharacter(config.materials[i]))
-        {
-            check.Fail(at, kNoControlCharacters + detail::QuotedText(config.materials[i]));
-        }
-        else if (!seen.insert(config.materials[i]).second)
-        {
-            check.Fail(at, "duplicate material " + detail::QuotedText(config.materials[i]));
-        }
+        CheckName(check, "materials[" + std::to_string(i) + "]", "material", config.materials[i], seen);
     }
 
-    if (config.particleTypes.size() >= ParticleTypeId::kNone)
-    {
-        check.Fail("particleTypes", "expected at most 65534 particle types, found " +
-                                        std::to_string(config.particleTypes.size()));
-    }
+    CheckCount(check, "particleTypes", "particle types", config.particleTypes.size());
     seen.clear();
     for (std::size_t i = 0; i < config.particleTypes.size(); ++i)
     {
         const std::string at = "particleTypes[" + std::to_string(i) + "]";
         const ParticleTypeDef& type = config.particleTypes[i];
-        if (type.name.empty())
-        {
-            check.Fail(at + ".name", "expected a non-empty name");
-        }
-        else if (detail::HasControlCharacter(type.name))
-        {
-            check.Fail(at + ".name", kNoControlCharacters + detail::QuotedText(type.name));
-        }
-        else if (!seen.insert(type.name).second)
-        {
-            check.Fail(at + ".name", "duplicate particle type " + detail::QuotedText(type.name));
-        }
+        CheckName(check, at + ".name", "particle type", type.name, seen);
         CheckFields(check, at, type, ParticleTypeFields(), config);
     }
 
-    if (config.rules.size() >= RuleId::kNone)
-    {
-        check.Fail("rules", "expected at most 65534 rules, found " + std::to_string(config.rules.size()));
-    }
+    CheckCount(check, "rules", "rules", config.rules.size());
     MaterialPairs pairs;
     std::map<std::string, std::size_t> pairNames;
     for (std::size_t i = 0; i < config.rules.size(); ++i)
@@ -357,12 +353,12 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
         static_cast<std::uint64_t>(config.rules.size()) * config.budget.contacts;
     if (contactRoom > kMaxContactRoom)
     {
-        check.Fail("budget.contacts", "room for " + std::to_string(config.budget.contacts) +
-                                          " touching contacts for each of the " +
-                                          std::to_string(config.rules.size()) + " rules is " +
-                                          std::to_string(contactRoom) +
-                                          " entries; rules times contacts may be at most " +
-                                          std::to_string(kMaxContactRoom) + " (about 4 GB): lower contacts");
+        check.Fail("budget.contacts",
+                   "room for " + std::to_string(config.budget.contacts) +
+                       " touching contacts for each of the " + std::to_string(config.rules.size()) +
+                       " rules is " + std::to_string(contactRoom) +
+                       " entries; rules times contacts may be at most " + std::to_string(kMaxContactRoom) +
+                       " (about 3.4 GB): lower contacts");
     }
 
     CheckFields(check, "sound", config.sound, SoundFields(), config);
@@ -392,11 +388,7 @@ std::vector<Diagnostic> ValidateParticles(std::span<const ParticleTypeDef> types
 {
     std::vector<Diagnostic> out;
     Checker check(file, out);
-    if (types.size() >= ParticleTypeId::kNone)
-    {
-        check.Fail("particleTypes",
-                   "expected at most 65534 particle types, found " + std::to_string(types.size()));
-    }
+    CheckCount(check, "particleTypes", "particle types", types.size());
     const EffectsConfig none; // particle types have no field naming a material or another type
     for (std::size_t i = 0; i < types.size(); ++i)
     {

@@ -410,8 +410,8 @@ const std::array kBudgetFields{
         .member = &B::contacts,
         .range = {0.0f, 1.0e6f},
         .doc =
-            "touching contacts (and body pairs) room is made for at creation, for each rule (about 64 "
-            "bytes a contact a rule; rules times contacts at most 2^26): with no more touching one rule at "
+            "touching contacts (and body pairs) room is made for at creation, for each rule (about 800 "
+            "bytes a contact a rule; rules times contacts at most 2^22): with no more touching one rule at "
             "once, neither the contact callbacks nor `Effects::Step` allocate",
         .step = 64.0f},
     Field<B>{.name = "particleHits",

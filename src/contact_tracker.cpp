@@ -53,17 +53,17 @@ ContactTracker::ContactTracker(const RuleTable& rules, const FixtureMaterials& m
 {
 }
 
-void ContactTracker::Reserve(std::uint32_t contacts)
+void ContactTracker::Reserve(std::uint32_t perRule, std::size_t total)
 {
     for (std::vector<TrackedContact>& list : m_byRule)
     {
-        list.reserve(contacts);
+        list.reserve(perRule);
     }
-    m_index.Reserve(contacts);
-    m_pairs.reserve(contacts);
-    m_freePairs.reserve(contacts);
-    m_endedPairs.reserve(contacts);
-    m_endingPairs.reserve(contacts);
+    m_index.Reserve(total);
+    m_pairs.reserve(total);
+    m_freePairs.reserve(total);
+    m_endedPairs.reserve(total);
+    m_endingPairs.reserve(total);
 }
 
 TrackedContact* ContactTracker::Tracked(const b2Contact* contact)
@@ -94,8 +94,6 @@ TrackedContact* ContactTracker::Track(b2Contact* contact)
     tracked.contact = contact;
     tracked.rule = rule;
     tracked.swapped = m_rules.FirstMaterial(rule) != materialA;
-    tracked.id = m_nextId++;
-    tracked.beganStep = m_step;
     tracked.pair = FindOrAddPair(contact, rule);
     m_pairs[tracked.pair].contacts += 1;
     m_index.Set(contact, Pack(rule, list.size()));

@@ -63,9 +63,7 @@ struct TrackedContact
     b2Contact* contact = nullptr;
     RuleId rule;
     bool swapped = false;        ///< fixture A carries the rule's materialB (so A and B are swapped)
-    std::uint32_t id = 0;        ///< unique per tracking span, from 1, in order of tracking
     std::uint32_t pair = 0;      ///< slot of its body pair (ContactTracker::Pair)
-    std::uint64_t beganStep = 0; ///< value of the step counter when tracking began
     float normalImpulse[2] = {}; ///< N*s, largest PostSolve normal impulse per manifold point this step
 
     // New touches (manifold points new since the last enabled PreSolve, see the file comment), the stuff
@@ -108,9 +106,9 @@ class ContactTracker final : public b2ContactListener
 public:
     /// `rules` and `materials` must outlive the tracker.
     ContactTracker(const RuleTable& rules, const FixtureMaterials& materials);
-    /// Makes room for `contacts` touching contacts (of any rules) and as many body pairs and ended
-    /// pairs: up to that many, tracking allocates nothing.
-    void Reserve(std::uint32_t contacts);
+    /// Makes room for `perRule` touching contacts of each rule, `total` of all rules together, and as
+    /// many body pairs and ended pairs: up to that many, tracking allocates nothing.
+    void Reserve(std::uint32_t perRule, std::size_t total);
 
     /// The application's listener, forwarded every callback; may be null.
     void SetForward(b2ContactListener* listener) { m_forward = listener; }
@@ -198,7 +196,6 @@ private:
         const b2Body* bodyB = nullptr;
     };
     std::vector<EndingPair> m_endingPairs; // in the order their last contacts left
-    std::uint32_t m_nextId = 1;
     std::uint64_t m_step = 0;
     bool m_solved = false; // PreSolve was called since the last EndStep
 };

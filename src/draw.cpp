@@ -2,9 +2,6 @@
 
 #include "contactfx/effects.h"
 
-#include <box2d/b2_draw.h>
-#include <box2d/b2_world.h>
-
 namespace cfx
 {
 

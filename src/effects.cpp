@@ -6,7 +6,9 @@
 #include "emitter.h"
 #include "events.h"
 #include "fixture_materials.h"
+#include "nearest_name.h"
 #include "particle_system_access.h"
+#include "quoted_text.h"
 #include "step_check.h"
 #include "vector_text.h"
 
@@ -15,9 +17,7 @@
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
-#include <cmath>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 namespace cfx
@@ -152,13 +152,13 @@ struct Effects::Internals
         : claim(world), tracker(rules, materials),
           destruction(materials, tracker, particles, def.destructionListener),
           emitter(config, def.seed, def.particles.checkParticles),
-          events(materials, config.budget.contacts, config.budget.particleHits)
+          events(materials, config.ContactRoom(), config.budget.particleHits)
     {
         // A listener the application set on the world before is kept and forwarded to, as one given here.
         b2ContactListener* worldListener = world.GetContactManager().m_contactListener;
         b2ContactListener* worldOwn = worldListener == BoxDefaultContactListener() ? nullptr : worldListener;
         tracker.SetForward(def.contactListener != nullptr ? def.contactListener : worldOwn);
-        tracker.Reserve(config.budget.contacts);
+        tracker.Reserve(config.budget.contacts, config.ContactRoom());
     }
 
     WorldClaim claim;
@@ -278,6 +278,32 @@ void Effects::SetMaterial(b2Fixture* fixture, MaterialId material)
     }
 }
 
+MaterialId Effects::RequireMaterial(std::string_view name) const
+{
+    const MaterialId material = m_config.FindMaterial(name);
+    if (!material.IsValid())
+    {
+        detail::SuggestionBudget budget;
+        throw InputError("<api>", "material",
+                         "unknown material " + detail::QuotedText(name) +
+                             detail::DidYouMean(name, m_config.materials, budget) +
+                             " (materials: " + detail::NameList(m_config.materials, "none") + ")");
+    }
+    return material;
+}
+
+void Effects::SetMaterial(b2Fixture* fixture, std::string_view material)
+{
+    CheckMaterialArguments(fixture, "fixture", MaterialId{});
+    SetMaterial(fixture, RequireMaterial(material));
+}
+
+void Effects::SetMaterial(b2Body* body, std::string_view material)
+{
+    CheckMaterialArguments(body, "body", MaterialId{});
+    SetMaterial(body, RequireMaterial(material));
+}
+
 MaterialId Effects::Material(const b2Fixture* fixture) const
 {
     return m_internals->materials.Get(fixture);
@@ -355,6 +381,7 @@ void Effects::Step(float dt)
             ~RecycledBodies() { detail::ParticleSystemAccess::DestroyDeferredBodies(particles); }
         } recycled{m_particles};
         detail::ParticleSystemAccess::DeferBodyDestruction(m_particles);
+        detail::ParticleSystemAccess::SpawnAfterWorldStep(m_particles);
         m_internals->emitter.Emit(m_world, m_config, tracker, events, m_particles, m_stats, dt);
         // Everything recorded has been read. A contact that ends from here on (the recycled bodies, and
         // the particle step's) is reported in the next step.
@@ -372,6 +399,7 @@ void Effects::Step(float dt)
     m_stats.crossings = m_particles.Counters().crossings;
     m_stats.nonFinite = m_particles.Counters().nonFinite;
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
+    m_stats.droppedHitGroups = m_particles.Counters().droppedHitGroups;
     m_stats.staticGeometryBuilds = m_particles.StaticGeometryBuilds();
     m_stats.staleMaterials = m_internals->materials.Stale();
     hold.HandOver();

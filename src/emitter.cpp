@@ -11,7 +11,6 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
-#include <limits>
 
 namespace cfx::detail
 {
@@ -177,12 +176,12 @@ Emitter::Emitter(const EffectsConfig& config, std::uint64_t seed, bool auditStar
         m_burstTypes.push_back(
             rule.burstParticleType.empty() ? type : config.FindParticleType(rule.burstParticleType));
     }
-    // Room for the configured number of touching contacts (budget.contacts), each a pair of its own
-    // with both manifold points at most.
-    m_pairSteps.reserve(config.budget.contacts);
-    m_rates.reserve(config.budget.contacts);
-    m_order.reserve(config.budget.contacts);
-    m_samples.reserve(std::size_t{2} * config.budget.contacts);
+    // Room for the configured number of touching contacts (budget.contacts for each rule), each a pair of
+    // its own with both manifold points at most.
+    m_pairSteps.reserve(config.ContactRoom());
+    m_rates.reserve(config.ContactRoom());
+    m_order.reserve(config.ContactRoom());
+    m_samples.reserve(std::size_t{2} * config.ContactRoom());
 }
 
 void Emitter::Emit(b2World& world, const EffectsConfig& config, const ContactTracker& tracker,

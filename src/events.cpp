@@ -5,7 +5,7 @@
 namespace cfx::detail
 {
 
-EventTracker::EventTracker(const FixtureMaterials& materials, std::uint32_t pairs, std::uint32_t hitGroups)
+EventTracker::EventTracker(const FixtureMaterials& materials, std::size_t pairs, std::uint32_t hitGroups)
     : m_materials(materials)
 {
     m_scrapes.reserve(pairs);

@@ -78,14 +78,15 @@ struct PairMeasure
 class EventTracker
 {
 public:
-    /// `materials` must outlive the tracker. `pairs`: body pairs to make room for (budget.contacts);
-    /// `hitGroups`: particle hit groups a step reports at most (budget.particleHits).
-    EventTracker(const FixtureMaterials& materials, std::uint32_t pairs, std::uint32_t hitGroups = 0);
+    /// `materials` must outlive the tracker. `pairs`: body pairs to make room for
+    /// (EffectsConfig::ContactRoom); `hitGroups`: particle hit groups a step reports at most
+    /// (budget.particleHits).
+    EventTracker(const FixtureMaterials& materials, std::size_t pairs, std::uint32_t hitGroups = 0);
 
     /// Starts the step numbered `step` (ContactTracker::Step) lasting `dt` s (> 0): clears the last
     /// step's events, then each pair in `ended` (ContactTracker::EndedPairs, in that order) ends its
-    /// scrape, if one is going on, as `destroyed` or `contactEnded` with the last contact's fixtures and
-    /// materials, and its slot is cleared for the next pair that takes it.
+    /// scrape, if one is going on, with the pair's reason (EndedPair::reason) and the last contact's fixtures
+    /// and materials, and its slot is cleared for the next pair that takes it.
     void BeginStep(std::uint64_t step, float dt, std::span<const EndedPair> ended);
 
     /// A body pair's fastest new touch this step: an impact, with a fresh id, when its approach speed

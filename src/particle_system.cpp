@@ -17,13 +17,12 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <box2d/b2_body.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 #include <cmath>
-#include <sstream>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -98,6 +97,25 @@ struct HitSums
 };
 constexpr std::uint32_t kNoGroup = 0xFFFFFFFFu;
 
+// A hash of where every non-static body is (position and angle, bit for bit): the same before and after
+// a b2World::Step only when no body moved in it.
+std::uint64_t MovingPoses(const b2World& world)
+{
+    std::uint64_t hash = 0xcbf29ce484222325u; // FNV-1a over 32-bit words
+    auto fold = [&hash](float value)
+    { hash = (hash ^ std::bit_cast<std::uint32_t>(value)) * 0x100000001b3u; };
+    for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
+    {
+        if (body->GetType() != b2_staticBody)
+        {
+            fold(body->GetPosition().x);
+            fold(body->GetPosition().y);
+            fold(body->GetAngle());
+        }
+    }
+    return hash;
+}
+
 } // namespace
 
 struct ParticleSystem::Impl
@@ -137,6 +155,17 @@ struct ParticleSystem::Impl
     float lastDt = 0.0f;
     b2Vec2 lastGravity{0.0f, 0.0f};
     std::uint64_t lastBuilds = 0;
+    // Whether this step's spawns were placed after the bodies moved (see ParticleSystem::Spawn): not known
+    // until the first Spawn since the last step, which notes the moving bodies' poses, or Effects, which
+    // spawns after b2World::Step, says so (ParticleSystemAccess::SpawnAfterWorldStep).
+    enum class SpawnSide : std::uint8_t
+    {
+        none,        ///< no spawn since the last step
+        posesNoted,  ///< spawnPoses holds the poses at the first spawn
+        afterMoving, ///< declared placed after the bodies moved
+    };
+    SpawnSide spawnSide = SpawnSide::none;
+    std::uint64_t spawnPoses = 0;
     particles::Workers workers;
     std::array<std::vector<b2Body*>, kMaxThreads> dead; // reserved to capacity when body-backed
     // While Effects emits (ParticleSystemAccess::DeferBodyDestruction), the bodies of the particles Spawn
@@ -519,6 +548,11 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.life[slot] = std::min(spawn.life, 1.0f);
     impl.type[slot] = spawn.type.index;
     impl.clearance[slot] = particles::kSpawnedClearance;
+    if (impl.spawnSide == Impl::SpawnSide::none)
+    {
+        impl.spawnPoses = MovingPoses(impl.world);
+        impl.spawnSide = Impl::SpawnSide::posesNoted;
+    }
     if (impl.anyBodyBacked)
     {
         impl.body[slot] =
@@ -544,6 +578,11 @@ void ParticleSystem::ForgetBody(const b2Body* body)
     {
         impl.forgotten += 1;
     }
+}
+
+void detail::ParticleSystemAccess::SpawnAfterWorldStep(ParticleSystem& system)
+{
+    system.m_impl->spawnSide = ParticleSystem::Impl::SpawnSide::afterMoving;
 }
 
 void detail::ParticleSystemAccess::DeferBodyDestruction(ParticleSystem& system)
@@ -650,6 +689,11 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         step.sweeps = params.collide && !params.bodyBacked;
     }
     const bool scan = collide && impl.anyPoolCollides && m_count > 0;
+    struct SpawnSideReset // whatever happens below, the next step's spawns start anew
+    {
+        Impl& impl;
+        ~SpawnSideReset() { impl.spawnSide = Impl::SpawnSide::none; }
+    } spawnSideReset{impl};
     particles::StepTrust trust;
     if (scan)
     {
@@ -657,6 +701,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         impl.geometry.Scan(impl.world, impl.anyBodyBacked ? &particleBodies : nullptr, dt, impl.staticWatch);
         trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
         trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
+        trust.spawnsAfterMoving =
+            impl.spawnSide != Impl::SpawnSide::posesNoted || MovingPoses(impl.world) == impl.spawnPoses;
         impl.lastDt = dt;
         impl.lastGravity = gravity;
         impl.lastBuilds = impl.geometry.StaticBuilds();

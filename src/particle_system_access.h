@@ -1,5 +1,6 @@
-// contactfx internal: what the library's own benchmarks and tests may do with a ParticleSystem beyond
-// its public API. Not installed.
+// contactfx internal: what the rest of the library (Effects: deferred particle-body destruction, the
+// spawn checks), its benchmarks and its tests may do with a ParticleSystem beyond its public API. Not
+// installed.
 #pragma once
 
 #include "contactfx/particle_system.h"
@@ -17,6 +18,9 @@ struct ParticleSystemAccess
     /// kept instead of destroyed (Effects reads the world's contacts meanwhile; destroying a body ends
     /// its contacts). DestroyDeferredBodies destroys them, in the order they were recycled.
     static void DeferBodyDestruction(ParticleSystem& system);
+    /// The spawns until the next step are placed after the bodies moved (Effects emits after b2World::Step),
+    /// without the moving bodies' poses being hashed to find out (ParticleSystem::Spawn).
+    static void SpawnAfterWorldStep(ParticleSystem& system);
     static void DestroyDeferredBodies(ParticleSystem& system);
     /// Destroys the bodies of every body-backed particle now, as the destructor would: Effects' destructor
     /// does it first, while its destruction listener still forwards to the application's and the

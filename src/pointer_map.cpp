@@ -57,12 +57,6 @@ bool PointerMap::Erase(const void* key)
     return true;
 }
 
-void PointerMap::Clear()
-{
-    std::fill(m_keys.begin(), m_keys.end(), nullptr);
-    m_count = 0;
-}
-
 void PointerMap::Reserve(std::size_t count)
 {
     while (count * 2 > m_keys.size())

@@ -48,7 +48,6 @@ public:
     bool Erase(const void* key);
 
     std::size_t Size() const { return m_count; }
-    void Clear();
     /// Makes room for `count` entries so that inserting up to that many does not allocate.
     void Reserve(std::size_t count);
 

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "contactfx/error.h"
+#include "float_text.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace cfx::detail
 {
@@ -15,9 +15,7 @@ inline void CheckStepTime(float dt)
 {
     if (!(dt > 0.0f) || !std::isfinite(dt))
     {
-        std::ostringstream found;
-        found << dt;
-        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + found.str());
+        throw InputError("<api>", "dt", "expected a finite step time > 0 s, found " + FloatText(dt));
     }
 }
 

@@ -20,6 +20,12 @@ inline long Allocations()
 
 } // namespace cfx::test
 
+// GCC, inlining both into one call site, sees the malloc of operator new and the free of operator delete
+// and warns of a mismatched pair (-Wmismatched-new-delete), although the two are paired here.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void* operator new(std::size_t size)
 {
     cfx::test::g_allocations.fetch_add(1, std::memory_order_relaxed);
@@ -49,3 +55,6 @@ void operator delete[](void* memory, std::size_t) noexcept
 {
     std::free(memory);
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif

@@ -132,12 +132,6 @@ void Simulation::Step()
     ++m_steps;
 }
 
-std::string PairName(const RuleDef& rule)
-{
-    return rule.materialA < rule.materialB ? rule.materialA + "+" + rule.materialB
-                                           : rule.materialB + "+" + rule.materialA;
-}
-
 std::string EventJsonLine(const EffectEvent& event, const EffectsConfig& config, double hz)
 {
     using Json = nlohmann::ordered_json;
@@ -228,6 +222,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     root["spawn_over_capacity"] = stats.spawnOverCapacity;
     root["non_finite"] = stats.nonFinite;
     root["skipped_bodies"] = stats.skippedBodies;
+    root["dropped_hit_groups"] = stats.droppedHitGroups;
     root["non_finite_samples"] = stats.nonFiniteSamples;
     root["stale_materials"] = stats.staleMaterials;
     root["static_geometry_builds"] = stats.staticGeometryBuilds;

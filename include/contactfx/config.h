@@ -29,8 +29,9 @@ enum class RecyclePolicy : std::uint8_t
 };
 
 /// The most touching-contact entries a config's budget may make room for: rules * budget.contacts (each
-/// rule has room for budget.contacts of its own, about 64 bytes each: this is about 4 GB).
-inline constexpr std::uint64_t kMaxContactRoom = std::uint64_t{1} << 26;
+/// rule has room for budget.contacts of its own, and the body pairs and a step's events as much room in
+/// all: about 800 bytes an entry, measured, so this is about 3.4 GB).
+inline constexpr std::uint64_t kMaxContactRoom = std::uint64_t{1} << 22;
 
 /// The particle budget.
 struct ParticleBudget
@@ -38,7 +39,7 @@ struct ParticleBudget
     std::uint32_t capacity = 4096; ///< hard cap on live particles, 1 .. 4,000,000
     RecyclePolicy recycle = RecyclePolicy::oldest;
     /// Touching contacts (and body pairs) Effects makes room for when it is created, for each rule (about
-    /// 64 bytes a contact a rule; rules * contacts <= kMaxContactRoom), 0 .. 1,000,000:
+    /// 800 bytes a contact a rule; rules * contacts <= kMaxContactRoom), 0 .. 1,000,000:
     /// with no more touching one rule at once, neither the contact callbacks nor Effects::Step allocate.
     /// More allocate once, as they first happen.
     std::uint32_t contacts = 1024;
@@ -67,6 +68,9 @@ struct EffectsConfig
     /// Index of a material / particle type by name, or an invalid id.
     MaterialId FindMaterial(std::string_view wanted) const;
     ParticleTypeId FindParticleType(std::string_view wanted) const;
+    /// Touching contacts of all rules together that Effects makes room for: rules * budget.contacts (at
+    /// most kMaxContactRoom in a valid config). Body pairs and a step's events get as much room.
+    std::size_t ContactRoom() const { return rules.size() * std::size_t{budget.contacts}; }
 };
 
 /// Every problem in `config`, each with `file` as given and the field path. Empty when valid.

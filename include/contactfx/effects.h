@@ -2,7 +2,7 @@
 //
 //     b2World world(gravity);                    // the application's world
 //     cfx::Effects fx(world, cfx::EffectsDef{cfx::DefaultPreset()}); // installs its contact listener
-//     fx.SetMaterial(tyreFixture, fx.FindMaterial("rubber"));
+//     fx.SetMaterial(tyreFixture, "rubber");
 //     for (;;) { world.Step(dt, 8, 3); fx.Step(dt); draw(fx.Particles()); }
 //
 // Data flows one way, once per step: Box2D's callbacks record touching contacts and impulses
@@ -93,6 +93,12 @@ public:
     void SetMaterial(b2Fixture* fixture, MaterialId material);
     /// Gives every fixture of `body` the material; throws as above (field "body" for a null body).
     void SetMaterial(b2Body* body, MaterialId material);
+    /// The same with the material's name, which must be one of the config's: throws InputError (file
+    /// "<api>", field "material") naming the nearest material when it is not, and as above; nothing changes
+    /// then. Prefer it to SetMaterial(fixture, FindMaterial(name)), where a misspelt name gives an invalid
+    /// id, which removes the fixture's material without a word.
+    void SetMaterial(b2Fixture* fixture, std::string_view material);
+    void SetMaterial(b2Body* body, std::string_view material);
     /// The fixture's material, or an invalid id (also for a null fixture).
     MaterialId Material(const b2Fixture* fixture) const;
     /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
@@ -103,6 +109,9 @@ public:
     /// (file "<api>", field "fixture") for a null fixture; nothing changes then.
     void ForgetFixture(b2Fixture* fixture);
 
+    /// The application's listeners, forwarded every Box2D callback from the next one on (null: none). They
+    /// must stay valid until replaced, and after the Effects is destroyed while the world uses them (the
+    /// destructor puts them back on the world).
     void SetContactListener(b2ContactListener* listener);
     void SetDestructionListener(b2DestructionListener* listener);
     void SetEventListener(EffectEventListener* listener) { m_eventListener = listener; }
@@ -173,6 +182,8 @@ private:
     /// Throws SetMaterial's InputError for a null `target` (named `targetField`) or a material id that is
     /// neither invalid nor one of the config's.
     void CheckMaterialArguments(const void* target, const char* targetField, MaterialId material) const;
+    /// The id of the config's material `name`; throws InputError (field "material") when it has none.
+    MaterialId RequireMaterial(std::string_view name) const;
 
     b2World& m_world;
     EffectsConfig m_config;

@@ -65,15 +65,17 @@ struct ParticleSpawn
 /// Slot(i) of each array. Valid until the next Spawn or Step.
 struct ParticleView
 {
-    const float* positionX = nullptr;
+    const float* positionX = nullptr; ///< m, world, per slot
     const float* positionY = nullptr;
-    const float* velocityX = nullptr;
+    const float* velocityX = nullptr; ///< m/s, world, per slot
     const float* velocityY = nullptr;
+    /// Per slot, the part of its lifetime left, (0, 1]; 0 for a particle that died in the last step (a
+    /// crushed one, or one thrown out of the world): the next Step or Spawn removes it, draw nothing for it.
     const float* life = nullptr;
-    const std::uint16_t* type = nullptr;
-    std::uint32_t head = 0;
-    std::uint32_t count = 0;
-    std::uint32_t capacity = 0;
+    const std::uint16_t* type = nullptr; ///< per slot, the index of its particle type (ParticleTypeId)
+    std::uint32_t head = 0;              ///< the slot of the oldest particle
+    std::uint32_t count = 0;             ///< live particles, 0 .. capacity
+    std::uint32_t capacity = 0;          ///< slots in each array
 
     std::uint32_t Slot(std::uint32_t i) const
     {
@@ -167,8 +169,13 @@ public:
     ParticleSystem(const ParticleSystem&) = delete;
     ParticleSystem& operator=(const ParticleSystem&) = delete;
 
-    /// Adds a particle, recycling the oldest one when full. Throws InputError (file "<api>", field "type")
+    /// Adds a particle; when full, recycles one as budget.recycle says (the oldest, or the one with the
+    /// least life left). Throws InputError (file "<api>", field "type")
     /// when spawn.type is not one of the system's types; nothing changes then.
+    /// Spawn before or after b2World::Step, but keep one step's spawns on one side of it: at the next Step
+    /// they are taken as placed after the bodies moved when no non-static body moved since the first
+    /// of them (a hash of their poses, taken at that first Spawn: O(bodies) once a step), else as there
+    /// while the bodies moved, swept against their motion like any other particle.
     void Spawn(const ParticleSpawn& spawn);
     /// Advances every particle by `dt` seconds (> 0) under `gravity` (m/s^2). Throws InputError (file
     /// "<api>", field "dt" or "gravity") when dt is not finite and > 0 or gravity is not finite; nothing
@@ -229,7 +236,7 @@ public:
     std::size_t BytesPerSlot() const;
 
 private:
-    friend struct detail::ParticleSystemAccess; // benchmarks and tests (src/particle_system_access.h)
+    friend struct detail::ParticleSystemAccess; // Effects, benchmarks, tests (src/particle_system_access.h)
     struct Impl;
 
     std::unique_ptr<Impl> m_impl;

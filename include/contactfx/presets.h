@@ -26,7 +26,8 @@ EffectsConfig TutorialPreset();
 
 /// contactfx's model on the same materials: every manifold point, tangential speed, Box2D's friction
 /// mix, pressure-weighted, thresholds per pair, rate-based emission per body pair independent of the step
-/// rate and of the tessellation, spawning outside every solid (or not at all), pool particles with colour
+/// rate and of the tessellation (of a chain ground; boxes side by side catch bodies in Box2D itself, see
+/// docs/design.md), spawning outside every solid (or not at all), pool particles with colour
 /// and size over life. The same assignments as the tutorial preset.
 EffectsConfig DefaultPreset();
 

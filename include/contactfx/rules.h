@@ -2,8 +2,10 @@
 //
 // A rule says what happens when two materials rub: which particle type, from what intensity, at what
 // rate, measured how. Rules are symmetric: the rule for (steel, concrete) is also the rule for
-// (concrete, steel). RuleTable answers "which rule for these two materials" in O(1) from a dense
-// material x material matrix; it is a pure function of the two ids.
+// (concrete, steel). RuleTable answers "which rule for these two materials" in O(1): from a dense
+// material x material matrix for up to kDenseMaterials materials (2 MB at most), else from a hash table
+// of the pairs that have a rule (memory grows with the rules, not with the square of the materials); it
+// is a pure function of the two ids.
 #pragma once
 
 #include "contactfx/intensity.h"
@@ -52,9 +54,14 @@ enum class SpawnPlacement : std::uint8_t
 /// object is created (an unknown name is an error naming the field).
 struct RuleDef
 {
+    /// The two materials (names of EffectsConfig::materials; the same name twice: a material on itself).
+    /// Their order only names the two sides (the particle type's inheritA and inheritB, the events'
+    /// materialA and fixtureA); the rule is symmetric.
     std::string materialA;
     std::string materialB;
+    /// What the pair's scrapes emit (a name of EffectsConfig::particleTypes).
     std::string particleType;
+    /// How a contact point's intensity is measured (intensity.h).
     IntensityModel intensity;
     /// Intensities <= threshold emit nothing (rate: the body pair's; perStep: each sample's). [0, 1e6].
     float threshold = 1.0f;
@@ -69,6 +76,7 @@ struct RuleDef
     /// maxRate, at any step rate; and a one-step spike (a landing's pressure) is not cut while it is
     /// within the savings plus the step's allowance (beyond that it gets those, which grow with dt).
     float maxRate = 1000.0f;
+    /// Where particles start (see SpawnPlacement).
     SpawnPlacement placement = SpawnPlacement::surface;
 
     // Events (events.h) and impact bursts.
@@ -98,7 +106,7 @@ struct RuleDef
     int BurstSize(float approachSpeed) const
     {
         const float burst = burstPerSpeed * (approachSpeed - BurstFrom());
-        const float capped = burst < burstMax ? burst : burstMax;
+        const float capped = burst >= burstMax ? burstMax : burst; // NaN stays NaN, and bursts nothing
         // Validated rules give at most 1e5; beyond 1e9 (a rule that skipped validation) it is held at 1e9.
         return !(capped >= 1.0f) ? 0 : capped >= 1.0e9f ? 1000000000 : static_cast<int>(capped);
     }
@@ -106,16 +114,24 @@ struct RuleDef
     bool operator==(const RuleDef&) const = default;
 };
 
+/// The rule's name: its two material names sorted, joined by '+' ("concrete+steel"); what the events, the
+/// stats file, the CLI and the testbed call it, and unique among a valid config's rules.
+std::string PairName(const RuleDef& rule);
+
 /// Symmetric (material, material) -> rule lookup.
 class RuleTable
 {
 public:
+    /// Up to this many materials the table is a dense matrix (a load per lookup); above, a hash table.
+    static constexpr int kDenseMaterials = 1024;
+
     RuleTable() = default;
-    /// A table for `materialCount` materials with no rules.
+    /// A table for `materialCount` materials (0 .. 65,535) with no rules; throws InputError otherwise.
     explicit RuleTable(int materialCount);
 
-    /// Sets the rule for the unordered pair {a, b}; `a` is remembered as the rule's first material.
-    /// Both ids must be valid and < material count.
+    /// Sets the rule for the unordered pair {a, b} (replacing any rule it had); `a` is remembered as the
+    /// rule's first material. Throws InputError unless both ids are valid and < material count and the
+    /// rule id is valid. Allocates (a build step, not a per-step one).
     void Set(MaterialId a, MaterialId b, RuleId rule);
     /// The rule for the unordered pair, or RuleId{} when either id is invalid or no rule is set.
     RuleId Find(MaterialId a, MaterialId b) const
@@ -123,6 +139,10 @@ public:
         if (!a.IsValid() || !b.IsValid() || a.index >= m_count || b.index >= m_count)
         {
             return RuleId{};
+        }
+        if (m_count > kDenseMaterials)
+        {
+            return FindHashed(a, b);
         }
         return m_cells[static_cast<std::size_t>(a.index) * static_cast<std::size_t>(m_count) + b.index];
     }
@@ -133,9 +153,16 @@ public:
     MaterialId FirstMaterial(RuleId rule) const { return m_first[rule.index]; }
 
 private:
+    RuleId FindHashed(MaterialId a, MaterialId b) const;
+    /// The hashed table's slot for the pair's key: where it is, or the empty slot where it goes.
+    std::size_t HashedSlot(std::uint32_t key) const;
+
     int m_count = 0;
-    std::vector<RuleId> m_cells;     // m_count * m_count, kept symmetric
-    std::vector<MaterialId> m_first; // per rule: its materialA
+    /// Dense: m_count * m_count, kept symmetric. Hashed: a power of two of slots, at most half full.
+    std::vector<RuleId> m_cells;
+    std::vector<std::uint32_t> m_keys; ///< hashed only: per slot, (smaller id << 16) | larger id, or empty
+    std::size_t m_pairs = 0;           ///< hashed only: slots in use
+    std::vector<MaterialId> m_first;   ///< per rule: its materialA
 };
 
 } // namespace cfx

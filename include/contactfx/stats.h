@@ -16,7 +16,9 @@ struct RuleStats
     std::uint32_t contactsMax = 0; ///< most tracked contacts at once
     std::uint64_t spawned = 0;     ///< particles emitted in all
     std::uint32_t spawnedLastStep = 0;
-    float intensityMaxLastStep = 0.0f; ///< largest sample intensity in the last step
+    /// The largest intensity in the last step: of a sample (perStep emission), or of a body pair's
+    /// weighted mean of its samples (rate emission).
+    float intensityMaxLastStep = 0.0f;
     /// m/s: the fastest approach of a new touch of the rule's pairs in the last step, whether or not it
     /// reached impactThreshold (0: no new touch). What the tuning plot sets impactThreshold against.
     float approachMaxLastStep = 0.0f;
@@ -32,12 +34,12 @@ struct RuleStats
 /// Counters since creation.
 struct EffectsStats
 {
-    std::uint64_t steps = 0;
+    std::uint64_t steps = 0;                  ///< Effects::Step calls that stepped (dt accepted)
     double time = 0.0;                        ///< s, sum of step times
     std::vector<std::uint64_t> spawnedByType; ///< per particle type
     std::vector<RuleStats> rules;             ///< per rule
-    std::uint32_t live = 0;
-    std::uint32_t liveMax = 0;
+    std::uint32_t live = 0;                   ///< particles live after the last step (pool and bodies)
+    std::uint32_t liveMax = 0;                ///< the most live after any step
     /// With ParticleSystemOptions::checkParticles (EffectsDef::particles) only, else 0: particles whose
     /// start disc overlapped a solid fixture by Box2D's own b2TestOverlap, an audit independent of the
     /// placement's search (which never starts a particle inside; spawnRejected counts those it could not
@@ -64,6 +66,9 @@ struct EffectsStats
     /// Body steps in which a body was left out of particle collision because its state, or its pose at
     /// the start of the step, was not finite or beyond 1e7 (ParticleCounters::skippedBodies).
     std::uint64_t skippedBodies = 0;
+    /// Particle hit groups left out of a step's events because it had more than budget.particleHits
+    /// (ParticleCounters::droppedHitGroups); the groups with the most hits were kept.
+    std::uint64_t droppedHitGroups = 0;
     /// Times the particles' static geometry cache was built (docs/particles.md, Static geometry): once for
     /// a level that never changes, and once more after each change of its static fixtures.
     std::uint64_t staticGeometryBuilds = 0;

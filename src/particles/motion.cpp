@@ -68,7 +68,7 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     SurfaceResponse response;
     response.velocity = surfaceVelocity;
     response.restitution = side.restitution > material.restitution ? side.restitution : material.restitution;
-    response.friction = MixFriction(side.friction, material.friction);
+    response.friction = b2MixFriction(side.friction, material.friction);
     response.restSpeed = side.restSpeed < material.restSpeed ? side.restSpeed : material.restSpeed;
     return response;
 }
@@ -327,8 +327,12 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
             pool.clearance[slot] = kNothingToTouch;
             continue;
         }
-        // Listed for a moving body's sake only, it may still be clear of the static geometry.
-        const float mark = pool.clearance[slot];
+        // Listed for a moving body's sake only, it may still be clear of the static geometry. Spawned
+        // before the bodies moved, it is swept as if it had been there all along.
+        const float stored = pool.clearance[slot];
+        const bool spawnedBefore =
+            !trust.spawnsAfterMoving && stored <= kSpawnedClearance && stored != kResting;
+        const float mark = spawnedBefore ? kUnknownClearance : stored;
         const StaticPart part = trust.resting && mark == kResting ? StaticPart::resting
                                 : trust.clearance && mark >= 0.0f ? StaticPart::clear
                                                                   : StaticPart::sweep;

@@ -103,6 +103,10 @@ struct StepTrust
     bool resting = false;
     /// The static geometry is the same as in the previous step, so the clearances hold.
     bool clearance = false;
+    /// The particles spawned since the last step were placed where they are after the bodies moved (the
+    /// usual order: b2World::Step, spawns, this step); else before (spawns, b2World::Step, this step), and
+    /// the bodies' motion is swept against them like against any other particle.
+    bool spawnsAfterMoving = true;
 };
 
 /// What a run of a step counts.

@@ -142,7 +142,7 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             {
                 rest -= into * normal;
                 rest *= SlideLeft(rest.Length(),
-                                  MixFriction(side.friction, m_movingMaterials[moving.material].friction) *
+                                  b2MixFriction(side.friction, m_movingMaterials[moving.material].friction) *
                                       -into);
             }
             b2Vec2 final = local.position + rest;

@@ -1,14 +1,15 @@
 // contactfx internal: a few persistent threads that run the parts of one job.
 //
-// The particle step splits its particles into contiguous ranges, one per thread. Starting a thread per
+// The particle step cuts its particles into contiguous runs, several per thread, and each thread takes the
+// next run not yet taken (particle_system.cpp, StepJob): one part per thread. Starting a thread per
 // step would cost more than the work at the sizes where splitting pays, so the helper threads are
 // started once (by Start, when their owner is created: never in a step) and sleep on a condition variable
 // between jobs. Run() gives part 0 to the calling thread and parts 1 .. n-1 to the helpers, and returns
 // when all are done. The caller waits for the helpers awake (yielding) for up to 200 microseconds before
-// it sleeps too: their parts are as long as its own, and a sleeping thread takes tens of microseconds to
-// wake on a virtual machine (measured: 27 instead of 57 microseconds for a job of empty parts on the
-// project's 2-core machine). No allocation
-// per job (a plain function pointer and context, no std::function).
+// it sleeps too: they take runs from the same pile and finish about when it does, and a sleeping thread takes
+// tens of microseconds to wake on a virtual machine (measured: 27 instead of 57 microseconds for a job of
+// empty parts on the project's 2-core machine). No allocation per job (a plain function pointer and context,
+// no std::function).
 //
 // Threading: Run is called from one thread at a time (the one that owns the particle system).
 #pragma once

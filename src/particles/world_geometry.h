@@ -29,6 +29,7 @@
 #include "particles/sweep.h"
 
 #include <algorithm>
+#include <box2d/b2_contact.h> // b2MixFriction: particles mix friction as Box2D does
 #include <box2d/b2_math.h>
 #include <cmath>
 #include <cstdint>
@@ -55,12 +56,6 @@ struct SurfaceMaterial
     /// The fixture's body, to name what a particle hit (ParticleHit); compared, never ordered by address.
     const b2Body* body = nullptr;
 };
-
-/// Box2D's friction mix (b2MixFriction): the square root of the product.
-inline float MixFriction(float a, float b)
-{
-    return std::sqrt(a * b);
-}
 
 /// A particle type's side of a touch.
 struct ParticleSide
@@ -214,7 +209,6 @@ public:
     std::size_t StaticPrimitives() const { return m_primitives.size(); }
     /// The static grid's cell size (m): the primitives' median extent, or finer for few long ones.
     float StaticCellSize() const { return m_staticGrid.CellSize(); }
-    std::size_t MovingShapes() const { return m_movingShapes.size(); }
     /// Heap bytes held.
     std::size_t Bytes() const;
 

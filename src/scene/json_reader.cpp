@@ -542,22 +542,6 @@ int ObjectReader::Int(std::string_view key, int fallback, int min, int max) cons
     return number ? static_cast<int>(*number) : fallback;
 }
 
-std::optional<int> ObjectReader::RequiredInt(std::string_view key, int min, int max) const
-{
-    const Json* value = Find(key);
-    if (value == nullptr)
-    {
-        m_diagnostics.Add(FieldPath(key), Missing("an integer"));
-        return std::nullopt;
-    }
-    auto number = ReadInteger(*value, FieldPath(key), m_diagnostics, min, max);
-    if (!number)
-    {
-        return std::nullopt;
-    }
-    return static_cast<int>(*number);
-}
-
 std::string ObjectReader::String(std::string_view key, std::string fallback) const
 {
     const Json* value = Find(key);

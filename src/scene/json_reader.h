@@ -126,8 +126,6 @@ public:
     b2Vec2 Vec(std::string_view key, b2Vec2 fallback, const NumberLimits& limits = kAnyFinite) const;
     bool Bool(std::string_view key, bool fallback) const;
     int Int(std::string_view key, int fallback, int min, int max) const;
-    /// Same, but a missing field is reported as an error.
-    std::optional<int> RequiredInt(std::string_view key, int min, int max) const;
     std::string String(std::string_view key, std::string fallback = {}) const;
 
     /// An array field: nullptr when absent or (reported) not an array.

@@ -120,11 +120,6 @@ float ParticleHitLoudness(const SoundRuleDef& sound, float speedSum, float count
     return Saturate(sound.approachSpeedGain * speedSum / std::sqrt(count));
 }
 
-std::string SortedPair(const std::string& a, const std::string& b)
-{
-    return b < a ? b + "+" + a : a + "+" + b;
-}
-
 } // namespace
 
 std::vector<SoundRuleDef> ResolveSoundRules(const EffectsConfig& config)
@@ -178,7 +173,7 @@ std::string VoiceName(const SoundVoice& voice, const EffectsConfig& config)
         return config.particleTypes[voice.particleType.index].name;
     }
     const RuleDef& rule = config.rules[voice.rule.index];
-    return SortedPair(rule.materialA, rule.materialB);
+    return PairName(rule);
 }
 
 float ImpactEnvelope(float x)

@@ -110,4 +110,55 @@ TEST(EmissionAllocation, NoneOnceWarmedUp)
     EXPECT_GT(stats.spawnRejected, rejectedBefore);
 }
 
+// budget.contacts is room for each rule: two rules, each touching fewer contacts than it at once but more
+// than it together, allocate nothing from the first step on (the shared index, body pairs, events and the
+// emitter's lists were once sized for budget.contacts in all).
+TEST(EmissionAllocation, TheContactBudgetIsForEachRule)
+{
+    b2World world(b2Vec2(0.0f, -10.0f));
+    EffectsConfig config;
+    config.materials = {"ground", "steel", "rubber"};
+    ParticleTypeDef type;
+    type.name = "p";
+    config.particleTypes = {type};
+    RuleDef steel;
+    steel.materialA = "steel";
+    steel.materialB = "ground";
+    steel.particleType = "p";
+    steel.threshold = 1.0e6f; // contacts tracked, nothing emitted
+    RuleDef rubber = steel;
+    rubber.materialA = "rubber";
+    config.rules = {steel, rubber};
+    config.budget.contacts = 64;
+    const long beforeEffects = Allocations();
+    Effects fx(world, EffectsDef{config});
+    ASSERT_GT(Allocations(), beforeEffects);
+    b2BodyDef groundDef;
+    b2Body* ground = world.CreateBody(&groundDef);
+    b2PolygonShape groundShape;
+    groundShape.SetAsBox(500.0f, 0.5f);
+    fx.SetMaterial(ground->CreateFixture(&groundShape, 0.0f), fx.FindMaterial("ground"));
+    const int perRule = 60; // of 64; 120 in all
+    for (int i = 0; i < 2 * perRule; ++i)
+    {
+        b2BodyDef def;
+        def.type = b2_dynamicBody;
+        def.position.Set(-400.0f + 3.0f * static_cast<float>(i), 0.9f);
+        b2Body* body = world.CreateBody(&def);
+        b2PolygonShape box;
+        box.SetAsBox(0.4f, 0.4f);
+        fx.SetMaterial(body->CreateFixture(&box, 1.0f), fx.FindMaterial(i % 2 == 0 ? "steel" : "rubber"));
+    }
+    const long before = Allocations();
+    for (int step = 0; step < 30; ++step)
+    {
+        world.Step(1.0f / 60.0f, 8, 3);
+        fx.Step(1.0f / 60.0f);
+    }
+    EXPECT_EQ(Allocations() - before, 0) << "allocations in the first 30 steps";
+    // Each box's two corner points are contacts of one body pair: one contact each.
+    EXPECT_EQ(fx.Stats().rules[0].contactsMax, static_cast<std::uint32_t>(perRule));
+    EXPECT_EQ(fx.Stats().rules[1].contactsMax, static_cast<std::uint32_t>(perRule));
+}
+
 } // namespace cfx::test

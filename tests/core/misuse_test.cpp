@@ -232,6 +232,11 @@ TEST(EffectsMisuse, StepRefusesZeroNegativeAndNonFiniteTimes)
         {
             EXPECT_EQ(error.Diagnostics()[0].path, "dt");
             EXPECT_NE(std::string(error.what()).find("step time"), std::string::npos) << error.what();
+            if (std::isnan(dt))
+            {
+                // Written as the config errors write it (FloatText), not as a stream does ("nan").
+                EXPECT_NE(std::string(error.what()).find("found NaN"), std::string::npos) << error.what();
+            }
         }
         EXPECT_EQ(scene.effects->Stats().steps, steps);
         EXPECT_EQ(scene.effects->Stats().time, time);
@@ -285,6 +290,7 @@ TEST(EffectsMisuse, StepRefusesANonFiniteGravity)
     catch (const InputError& error)
     {
         EXPECT_EQ(error.Diagnostics()[0].path, "gravity");
+        EXPECT_NE(std::string(error.what()).find("(0, NaN)"), std::string::npos) << error.what();
     }
     EXPECT_EQ(scene.effects->Stats().steps, 0u);
 }
@@ -368,6 +374,32 @@ TEST(EffectsMisuse, SetMaterialRefusesANullTargetAndAMaterialTheConfigLacks)
     EXPECT_EQ(effects.Material(scene.box->GetFixtureList()), steel);
     effects.SetMaterial(scene.box, MaterialId{}); // the invalid id still removes it
     EXPECT_FALSE(effects.Material(scene.box->GetFixtureList()).IsValid());
+}
+
+// A trial: SetMaterial(fixture, FindMaterial("steal")) removes the material without a word (FindMaterial
+// gives an invalid id for an unknown name). By name, a misspelt material is refused with the nearest one.
+TEST(EffectsMisuse, SetMaterialByNameRefusesAnUnknownNameAndNamesTheNearest)
+{
+    SlideScene scene;
+    Effects& effects = *scene.effects;
+    b2Fixture* box = scene.box->GetFixtureList();
+    effects.SetMaterial(box, "rubber");
+    EXPECT_EQ(effects.Material(box), scene.Material("rubber"));
+    effects.SetMaterial(scene.box, "steel");
+    EXPECT_EQ(effects.Material(box), scene.Material("steel"));
+    const Diagnostic misspelt = Refusal([&] { effects.SetMaterial(box, "steal"); });
+    EXPECT_EQ(misspelt.file, "<api>");
+    EXPECT_EQ(misspelt.path, "material");
+    EXPECT_NE(misspelt.message.find("unknown material \"steal\", did you mean \"steel\"?"), std::string::npos)
+        << misspelt.message;
+    const Diagnostic capital = Refusal([&] { effects.SetMaterial(scene.ground, "Concrete"); });
+    EXPECT_NE(capital.message.find("did you mean \"concrete\"?"), std::string::npos) << capital.message;
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(box, ""); }).path, "material");
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Fixture*>(nullptr), "steel"); }).path,
+              "fixture");
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Body*>(nullptr), "steal"); }).path, "body");
+    EXPECT_EQ(effects.Material(box), scene.Material("steel")); // unchanged by every refusal
+    EXPECT_EQ(effects.Material(scene.ground->GetFixtureList()), scene.Material("concrete"));
 }
 
 // A trial: Material(nullptr) crashed once any material was set, and ForgetFixture(nullptr) erased another

@@ -1,5 +1,6 @@
 #include "contactfx/config.h"
 #include "contactfx/effects.h"
+#include "contactfx/error.h"
 #include "contactfx/presets.h"
 #include "contactfx/rules.h"
 
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
+#include <string>
 
 namespace cfx
 {
@@ -38,6 +40,78 @@ TEST(RuleTable, AnyNumberOfRules)
     }
     EXPECT_EQ(table.RuleCount(), 40 * 41 / 2);
     EXPECT_EQ(table.Find(MaterialId{39}, MaterialId{3}), table.Find(MaterialId{3}, MaterialId{39}));
+}
+
+TEST(RuleTable, ManyMaterialsTakeRoomForTheirRulesOnly)
+{
+    // Above kDenseMaterials the table hashes the pairs: 65,535 materials would be 8.6 GB as a matrix
+    // (and their count squared overflows an int).
+    for (const int materials : {RuleTable::kDenseMaterials + 1, 50000, 65535})
+    {
+        RuleTable table(materials);
+        std::uint16_t next = 0;
+        for (int a = 0; a < 300; ++a)
+        {
+            const auto first = static_cast<std::uint16_t>(materials - 1 - a);
+            const auto second = static_cast<std::uint16_t>((a * 7) % (materials - 300));
+            table.Set(MaterialId{first}, MaterialId{second}, RuleId{next++});
+        }
+        for (int a = 0; a < 300; ++a)
+        {
+            const auto first = static_cast<std::uint16_t>(materials - 1 - a);
+            const auto second = static_cast<std::uint16_t>((a * 7) % (materials - 300));
+            EXPECT_EQ(table.Find(MaterialId{second}, MaterialId{first}),
+                      RuleId{static_cast<std::uint16_t>(a)});
+            EXPECT_EQ(table.Find(MaterialId{first}, MaterialId{second}),
+                      RuleId{static_cast<std::uint16_t>(a)});
+            EXPECT_EQ(table.FirstMaterial(RuleId{static_cast<std::uint16_t>(a)}), MaterialId{first});
+        }
+        EXPECT_FALSE(table.Find(MaterialId{1}, MaterialId{2}).IsValid());
+        EXPECT_FALSE(table.Find(MaterialId{}, MaterialId{0}).IsValid());
+        table.Set(MaterialId{0}, MaterialId{static_cast<std::uint16_t>(materials - 1)},
+                  RuleId{9}); // replaces
+        EXPECT_EQ(table.Find(MaterialId{static_cast<std::uint16_t>(materials - 1)}, MaterialId{0}),
+                  RuleId{9});
+        EXPECT_EQ(table.RuleCount(), 300);
+    }
+}
+
+TEST(RuleTable, RefusesIdsOutOfRange)
+{
+    EXPECT_THROW(RuleTable(-1), InputError);
+    EXPECT_THROW(RuleTable(65536), InputError);
+    for (const int materials : {4, 2000})
+    {
+        RuleTable table(materials);
+        const auto beyond = static_cast<std::uint16_t>(materials);
+        EXPECT_THROW(table.Set(MaterialId{0}, MaterialId{beyond}, RuleId{0}), InputError);
+        EXPECT_THROW(table.Set(MaterialId{}, MaterialId{0}, RuleId{0}), InputError);
+        EXPECT_THROW(table.Set(MaterialId{0}, MaterialId{1}, RuleId{}), InputError);
+        EXPECT_FALSE(table.Find(MaterialId{0}, MaterialId{1}).IsValid());
+    }
+}
+
+TEST(Effects, FiftyThousandMaterialsFindTheirRule)
+{
+    EffectsConfig config = DefaultPreset();
+    for (int i = 0; i < 50000; ++i)
+    {
+        config.materials.push_back("m" + std::to_string(i));
+    }
+    RuleDef rule = config.rules.front();
+    rule.materialA = "m49999";
+    rule.materialB = "m0";
+    config.rules.push_back(rule);
+    ASSERT_TRUE(Validate(config).empty());
+    b2World world(b2Vec2(0.0f, -10.0f));
+    EffectsDef def;
+    def.config = config;
+    Effects effects(world, def);
+    EXPECT_EQ(effects.Rules().Find(effects.FindMaterial("m0"), effects.FindMaterial("m49999")),
+              RuleId{static_cast<std::uint16_t>(config.rules.size() - 1)});
+    EXPECT_EQ(effects.Rules().Find(effects.FindMaterial("steel"), effects.FindMaterial("concrete")),
+              RuleId{0});
+    EXPECT_FALSE(effects.Rules().Find(effects.FindMaterial("m1"), effects.FindMaterial("m2")).IsValid());
 }
 
 TEST(Presets, TutorialTableHasFourMaterialsAndFourRules)
@@ -170,7 +244,7 @@ TEST(Config, TheContactRoomOfAllRulesIsBounded)
         }
     }
     ASSERT_EQ(config.rules.size(), 79u);
-    config.budget.contacts = 1000000; // 79e6 > 2^26
+    config.budget.contacts = 1000000; // 79e6 > 2^22
     const std::vector<Diagnostic> problems = Validate(config);
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_EQ(problems[0].path, "budget.contacts");

@@ -2,6 +2,7 @@
 #include "contactfx/files/text_file.h"
 #include "harness/simulation.h"
 
+#include <cstdio>
 #include <fstream>
 #include <gtest/gtest.h>
 
@@ -113,6 +114,35 @@ TEST(TutorialScene, StatsJsonHasEveryTypeAndRule)
     {
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     }
+}
+
+TEST(TutorialScene, HitGroupsOverTheBudgetAreCountedAsDropped)
+{
+    EffectsConfig config = DefaultPreset();
+    config.budget.particleHits = 1;
+    DrivenRun run(config, 0.0f);
+    std::uint64_t dropped = 0;
+    std::uint64_t kept = 0;
+    for (int step = 0; step < 1200; ++step)
+    {
+        run.simulation->Step();
+        const std::uint64_t before = dropped;
+        dropped = run.simulation->GetEffects().Stats().droppedHitGroups;
+        ASSERT_GE(dropped, before);
+        int groups = 0;
+        for (const EffectEvent& event : run.simulation->GetEffects().Events())
+        {
+            groups += event.type == EffectEventType::particleHits ? 1 : 0;
+        }
+        ASSERT_LE(groups, 1) << "step " << step;
+        kept += static_cast<std::uint64_t>(groups);
+    }
+    std::printf("hit groups kept %llu, dropped %llu\n", static_cast<unsigned long long>(kept),
+                static_cast<unsigned long long>(dropped));
+    EXPECT_GT(kept, 0u);
+    EXPECT_GT(dropped, 0u);
+    const std::string json = StatsJson(run.simulation->GetEffects(), 60.0f);
+    EXPECT_NE(json.find("\"dropped_hit_groups\": " + std::to_string(dropped)), std::string::npos) << json;
 }
 
 TEST(TutorialScene, UnknownMaterialNamesTheFixtureProperty)
