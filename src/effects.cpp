@@ -397,6 +397,7 @@ void Effects::Step(float dt)
     m_stats.crushed = m_particles.Counters().crushed;
     m_stats.particleStepsInside = m_particles.Counters().stepsInside;
     m_stats.crossings = m_particles.Counters().crossings;
+    m_stats.passedThroughMoving = m_particles.Counters().passedThroughMoving;
     m_stats.nonFinite = m_particles.Counters().nonFinite;
     m_stats.skippedBodies = m_particles.Counters().skippedBodies;
     m_stats.droppedHitGroups = m_particles.Counters().droppedHitGroups;

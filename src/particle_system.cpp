@@ -141,6 +141,9 @@ struct ParticleSystem::Impl
     std::vector<float> startX, startY;
     // Only with checkParticles: where a moving body's push took each particle from (PoolArrays::viaX).
     std::vector<float> viaX, viaY;
+    // Only with checkParticles: whether each particle was taken as placed after the bodies moved
+    // (PoolArrays::placedAfter).
+    std::vector<std::uint8_t> placedAfter;
     // Cold: bodies of body-backed particles (empty when no type is body-backed). bodySet holds the
     // bodies the system still owns: a body the application destroyed (ForgetBody) leaves it at once,
     // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
@@ -206,6 +209,7 @@ struct ParticleSystem::Impl
                                      startX.empty() ? nullptr : startY.data(),
                                      viaX.empty() ? nullptr : viaX.data(),
                                      viaX.empty() ? nullptr : viaY.data(),
+                                     placedAfter.empty() ? nullptr : placedAfter.data(),
                                      capacity,
                                      head};
     }
@@ -449,6 +453,7 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
         impl.startY.resize(m_capacity);
         impl.viaX.resize(m_capacity);
         impl.viaY.resize(m_capacity);
+        impl.placedAfter.resize(m_capacity);
     }
     if (impl.anyBodyBacked)
     {
@@ -770,9 +775,10 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         particles::CheckCounts found;
         const detail::ParticleBodyFilter particleBodies(*this);
         particles::CheckParticles(impl.world, impl.Arrays(m_capacity), impl.steps.data(), m_count,
-                                  impl.anyBodyBacked ? &particleBodies : nullptr, found);
+                                  impl.anyBodyBacked ? &particleBodies : nullptr, dt, found);
         m_counters.stepsInside += found.inside;
         m_counters.crossings += found.crossings;
+        m_counters.passedThroughMoving += found.passedThrough;
     }
 }
 
@@ -898,7 +904,8 @@ std::size_t ParticleSystem::MemoryBytes() const
     std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
     bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
     bytes += (impl.startX.capacity() + impl.startY.capacity() + impl.viaX.capacity() + impl.viaY.capacity()) *
-             sizeof(float);
+                 sizeof(float) +
+             impl.placedAfter.capacity();
     bytes += impl.hitSums.capacity() * sizeof(HitSums) + impl.hitOrder.capacity() * sizeof(std::uint32_t) +
              impl.hitGroups.capacity() * sizeof(ParticleHitGroup);
     return bytes + impl.geometry.Bytes();

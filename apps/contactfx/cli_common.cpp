@@ -70,9 +70,11 @@ void AddRunOptions(CLI::App& command, RunOptions& options, bool demo)
         ->capture_default_str();
     command.add_option("--stats", options.stats, "Write statistics as JSON to this file")
         ->check(NamesAFile());
-    command.add_flag("--check-particles", options.checkParticles,
-                     "Check every particle after every step against the world (slow): the stats count "
-                     "particle_steps_inside and crossings, and spawned_inside_solid audits every start");
+    command.add_flag(
+        "--check-particles", options.checkParticles,
+        "Check every particle after every step against the world (slow): the stats count "
+        "particle_steps_inside, crossings and passed_through_moving, and spawned_inside_solid audits "
+        "every start");
     command
         .add_option("--threads", options.threads,
                     "Threads for the particle step, 1 .. 8, split at any particle count (for testing: the "

@@ -218,6 +218,7 @@ std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash
     root["crushed"] = stats.crushed;
     root["particle_steps_inside"] = stats.particleStepsInside;
     root["crossings"] = stats.crossings;
+    root["passed_through_moving"] = stats.passedThroughMoving;
     root["spawn_rejected"] = stats.spawnRejected;
     root["spawn_over_capacity"] = stats.spawnOverCapacity;
     root["non_finite"] = stats.nonFinite;

@@ -99,10 +99,10 @@ private:
 /// The stats file of the CLI: {"steps", "hz", "seconds", "spawned": {TYPE: n}, "rules": {"A+B":
 /// {"contacts_max", "spawned", "spawn_rejected", "impacts", "intensity_max", "approach_max" (m/s, the fastest
 /// new touch, impact or not)}}, "live_max", "spawned_inside_solid", "crushed",
-/// "particle_steps_inside", "crossings", "spawn_rejected", "spawn_over_capacity", "non_finite",
-/// "skipped_bodies", "dropped_hit_groups", "non_finite_samples", "stale_materials", "static_geometry_builds",
-/// "state_hash"}; rule names sorted, every type and rule present; "state_hash" (Simulation::RunHash, 16
-/// hexadecimal digits) only when given.
+/// "particle_steps_inside", "crossings", "passed_through_moving", "spawn_rejected", "spawn_over_capacity",
+/// "non_finite", "skipped_bodies", "dropped_hit_groups", "non_finite_samples", "stale_materials",
+/// "static_geometry_builds", "state_hash"}; rule names sorted, every type and rule present; "state_hash"
+/// (Simulation::RunHash, 16 hexadecimal digits) only when given.
 std::string StatsJson(const Effects& effects, float hz, const StateHash* runHash = nullptr);
 
 /// One line of the CLI's events file (JSON Lines, newline included): {"type" (scrape_began,

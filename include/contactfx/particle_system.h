@@ -144,6 +144,10 @@ struct ParticleCounters
     /// With checkParticles: particle steps whose centre's straight path crossed a static edge or chain it
     /// collides with (a two-sided edge from either side, a one-sided one from its front).
     std::uint64_t crossings = 0;
+    /// With checkParticles: particle steps in which a particle went through a solid circle or polygon of a
+    /// moving body it collides with, deeper than its radius, from outside to outside, as seen from the
+    /// body (docs/particles.md, "Checking it").
+    std::uint64_t passedThroughMoving = 0;
     /// Pool particles that died because their position or velocity was not finite, or beyond 1e7 (m,
     /// m/s): thrown out of the world by absurd numbers (a restitution of 1e30, a spawn at infinity); and
     /// spawns refused for such a position or velocity, or a life that is NaN.

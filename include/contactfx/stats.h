@@ -54,6 +54,9 @@ struct EffectsStats
     /// (ParticleCounters).
     std::uint64_t particleStepsInside = 0;
     std::uint64_t crossings = 0;
+    /// Only with checkParticles (else 0): particle steps that went through a moving body
+    /// (ParticleCounters::passedThroughMoving).
+    std::uint64_t passedThroughMoving = 0;
     /// Particles not spawned because no start outside every solid existed near their contact (piles,
     /// crevices): a particle never starts inside.
     std::uint64_t spawnRejected = 0;

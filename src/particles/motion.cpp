@@ -341,6 +341,11 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         bool crushed = false;
         Hardest hardest;
         const bool checking = pool.viaX != nullptr;
+        if (checking)
+        {
+            pool.placedAfter[slot] =
+                mark <= kSpawnedClearance && mark != kResting ? 1 : 0; // as Collide takes it
+        }
         const float clearance =
             Collide(type, geometry, dt, part, mark, position, velocity, crushed, hardest,
                     checking ? pool.viaX + slot : nullptr, checking ? pool.viaY + slot : nullptr);
@@ -442,6 +447,7 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
                 pool.startY[write] = start.y;
                 pool.viaX[write] = start.x; // a straight flight; pass 2 notes a push
                 pool.viaY[write] = start.y;
+                pool.placedAfter[write] = 0; // pass 2 notes a spawn taken as placed after the bodies moved
             }
             if (pool.body != nullptr)
             {
@@ -541,6 +547,7 @@ void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to,
             pool.startY[write] = pool.startY[read];
             pool.viaX[write] = pool.viaX[read];
             pool.viaY[write] = pool.viaY[read];
+            pool.placedAfter[write] = pool.placedAfter[read];
         }
         if (pool.body != nullptr)
         {

@@ -52,6 +52,9 @@ struct PoolArrays
     /// Null unless checking, with startX.
     float* viaX;
     float* viaY;
+    /// 1 where the particle was just spawned and taken as placed after the bodies moved (the moving bodies'
+    /// motion was not swept against it: StepTrust::spawnsAfterMoving), else 0. Null unless checking.
+    std::uint8_t* placedAfter;
     std::uint32_t capacity;
     std::uint32_t head;
 

@@ -109,6 +109,7 @@ TEST(ShiftOrigin, ParticlesMoveWithTheWorld)
     EXPECT_EQ(scene.effects->Particles().count, later.y.size());
     EXPECT_EQ(scene.effects->Stats().particleStepsInside, 0u);
     EXPECT_EQ(scene.effects->Stats().crossings, 0u);
+    EXPECT_EQ(scene.effects->Stats().passedThroughMoving, 0u);
 }
 
 TEST(ShiftOrigin, ANonFiniteOriginIsRefusedAndChangesNothing)

@@ -101,6 +101,7 @@ TEST(SpawnScenes, TheSmallestRadiusKeepsEveryParticleOutside)
         EXPECT_GT(Spawned(stats), 100u);
         EXPECT_EQ(stats.particleStepsInside, 0u);
         EXPECT_EQ(stats.crossings, 0u);
+        EXPECT_EQ(stats.passedThroughMoving, 0u);
         EXPECT_EQ(stats.spawnedInsideSolid, 0u);
     }
     EffectsConfig smaller = DefaultPreset();
