@@ -35,6 +35,7 @@
 #include <contactfx/effects.h>
 #include <contactfx/particle_system.h>
 #include <contactfx/presets.h>
+#include <contactfx/rules.h>
 #include <vector>
 
 namespace
@@ -367,5 +368,30 @@ BENCHMARK(ChainGround)
     ->Iterations(300); // 5 s: the boxes stay on the shortest ground
 
 BENCHMARK(FarFixture)->Arg(0)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+// RuleTable::Find for 20,000 rules of one material against 20,000 others among 65,534 (the hashed table):
+// every pair shares its larger id, which once put them all in one cluster. Arg 1: that material is
+// the larger id of each pair; 0: the smaller.
+void RuleLookup(benchmark::State& state)
+{
+    constexpr int kRules = 20000;
+    constexpr std::uint16_t kShared = 65533;
+    cfx::RuleTable table(65534);
+    for (int i = 0; i < kRules; ++i)
+    {
+        const cfx::MaterialId other{static_cast<std::uint16_t>(state.range(0) != 0 ? i : 40000 + i)};
+        const cfx::MaterialId shared{static_cast<std::uint16_t>(state.range(0) != 0 ? kShared : 0)};
+        table.Set(other, shared, cfx::RuleId{static_cast<std::uint16_t>(i)});
+    }
+    int i = 0;
+    for (auto _ : state)
+    {
+        const cfx::MaterialId other{static_cast<std::uint16_t>(state.range(0) != 0 ? i : 40000 + i)};
+        benchmark::DoNotOptimize(table.Find(
+            cfx::MaterialId{static_cast<std::uint16_t>(state.range(0) != 0 ? kShared : 0)}, other));
+        i = i + 1 == kRules ? 0 : i + 1;
+    }
+}
+BENCHMARK(RuleLookup)->Arg(0)->Arg(1);
 
 BENCHMARK_MAIN();

@@ -292,13 +292,22 @@ MaterialId Effects::RequireMaterial(std::string_view name) const
     return material;
 }
 
-void Effects::SetMaterial(b2Fixture* fixture, std::string_view material)
+std::string_view Effects::NameText(const char* name)
+{
+    if (name == nullptr)
+    {
+        throw InputError("<api>", "material", "null (a material's name was expected)");
+    }
+    return name;
+}
+
+void Effects::SetMaterialNamed(b2Fixture* fixture, std::string_view material)
 {
     CheckMaterialArguments(fixture, "fixture", MaterialId{});
     SetMaterial(fixture, RequireMaterial(material));
 }
 
-void Effects::SetMaterial(b2Body* body, std::string_view material)
+void Effects::SetMaterialNamed(b2Body* body, std::string_view material)
 {
     CheckMaterialArguments(body, "body", MaterialId{});
     SetMaterial(body, RequireMaterial(material));

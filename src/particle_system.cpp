@@ -97,20 +97,27 @@ struct HitSums
 };
 constexpr std::uint32_t kNoGroup = 0xFFFFFFFFu;
 
-// A hash of where every non-static body is (position and angle, bit for bit): the same before and after
-// a b2World::Step only when no body moved in it.
-std::uint64_t MovingPoses(const b2World& world)
+// A hash of where every moving body is (a non-static body with a velocity, not one of `ownBodies`: the
+// particle bodies of body-backed types), position and angle bit for bit, with its address. b2World::Step
+// changes it whenever it moves a body; creating, destroying or teleporting a body at rest does not, nor
+// does a body-backed spawn.
+std::uint64_t MovingPoses(const b2World& world, const detail::PointerMap* ownBodies)
 {
     std::uint64_t hash = 0xcbf29ce484222325u; // FNV-1a over 32-bit words
-    auto fold = [&hash](float value)
-    { hash = (hash ^ std::bit_cast<std::uint32_t>(value)) * 0x100000001b3u; };
+    auto fold = [&hash](std::uint32_t word) { hash = (hash ^ word) * 0x100000001b3u; };
     for (const b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext())
     {
-        if (body->GetType() != b2_staticBody)
+        const b2Vec2 v = body->GetLinearVelocity();
+        const bool moving = v.x != 0.0f || v.y != 0.0f || body->GetAngularVelocity() != 0.0f;
+        if (body->GetType() != b2_staticBody && moving &&
+            (ownBodies == nullptr || ownBodies->Find(body) == nullptr))
         {
-            fold(body->GetPosition().x);
-            fold(body->GetPosition().y);
-            fold(body->GetAngle());
+            const auto address = reinterpret_cast<std::uintptr_t>(body);
+            fold(static_cast<std::uint32_t>(address));
+            fold(static_cast<std::uint32_t>(static_cast<std::uint64_t>(address) >> 32));
+            fold(std::bit_cast<std::uint32_t>(body->GetPosition().x));
+            fold(std::bit_cast<std::uint32_t>(body->GetPosition().y));
+            fold(std::bit_cast<std::uint32_t>(body->GetAngle()));
         }
     }
     return hash;
@@ -555,7 +562,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.clearance[slot] = particles::kSpawnedClearance;
     if (impl.spawnSide == Impl::SpawnSide::none)
     {
-        impl.spawnPoses = MovingPoses(impl.world);
+        impl.spawnPoses = MovingPoses(impl.world, impl.anyBodyBacked ? &impl.bodySet : nullptr);
         impl.spawnSide = Impl::SpawnSide::posesNoted;
     }
     if (impl.anyBodyBacked)
@@ -707,7 +714,8 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
         trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
         trust.spawnsAfterMoving =
-            impl.spawnSide != Impl::SpawnSide::posesNoted || MovingPoses(impl.world) == impl.spawnPoses;
+            impl.spawnSide != Impl::SpawnSide::posesNoted ||
+            MovingPoses(impl.world, impl.anyBodyBacked ? &impl.bodySet : nullptr) == impl.spawnPoses;
         impl.lastDt = dt;
         impl.lastGravity = gravity;
         impl.lastBuilds = impl.geometry.StaticBuilds();
@@ -833,6 +841,7 @@ bool ParticleSystem::Clear()
     m_count = 0;
     impl.candidatesValid = false;
     impl.hitGroups.clear();
+    impl.spawnSide = Impl::SpawnSide::none; // the next spawn notes the poses anew
     return true;
 }
 

@@ -50,7 +50,15 @@ RuleTable::RuleTable(int materialCount) : m_count(materialCount)
 std::size_t RuleTable::HashedSlot(std::uint32_t key) const
 {
     const std::size_t mask = m_keys.size() - 1;
-    std::size_t slot = (key * 0x9E3779B1u) & mask; // Fibonacci hashing; linear probing
+    // Every bit of the key reaches the low bits (a multiply alone leaves the low bits to the low half, the
+    // larger id: one material with thousands of rules probed one cluster, 5 microseconds a lookup).
+    std::uint32_t mixed = key;
+    mixed ^= mixed >> 16;
+    mixed *= 0x7feb352du;
+    mixed ^= mixed >> 15;
+    mixed *= 0x846ca68bu;
+    mixed ^= mixed >> 16;
+    std::size_t slot = mixed & mask; // linear probing
     while (m_keys[slot] != key && m_keys[slot] != kEmptyKey)
     {
         slot = (slot + 1) & mask;

@@ -40,7 +40,8 @@ struct ParticleBudget
     RecyclePolicy recycle = RecyclePolicy::oldest;
     /// Touching contacts (and body pairs) Effects makes room for when it is created, for each rule (about
     /// 800 bytes a contact a rule; rules * contacts <= kMaxContactRoom), 0 .. 1,000,000:
-    /// with no more touching one rule at once, neither the contact callbacks nor Effects::Step allocate.
+    /// with no more touching one rule at once, neither the contact callbacks nor Effects::Step allocate
+    /// for them (the particle system's own warm-up in its first steps aside: docs/particles.md).
     /// More allocate once, as they first happen.
     std::uint32_t contacts = 1024;
     /// Particle hit groups (per particle type and body) a step reports at most, 0 .. 4096: beyond it the

@@ -46,6 +46,7 @@
 #include <memory>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 class b2World;
 class b2Body;
@@ -96,9 +97,21 @@ public:
     /// The same with the material's name, which must be one of the config's: throws InputError (file
     /// "<api>", field "material") naming the nearest material when it is not, and as above; nothing changes
     /// then. Prefer it to SetMaterial(fixture, FindMaterial(name)), where a misspelt name gives an invalid
-    /// id, which removes the fixture's material without a word.
-    void SetMaterial(b2Fixture* fixture, std::string_view material);
-    void SetMaterial(b2Body* body, std::string_view material);
+    /// id, which removes the fixture's material without a word. Takes what converts to std::string_view
+    /// (a literal, std::string, const char*: a null one throws, field "material") and nothing else, so
+    /// SetMaterial(fixture, {}) still removes the material and SetMaterial(fixture, 0) does not compile.
+    template <class Name>
+    requires std::is_convertible_v<const Name&, std::string_view> &&
+        (!std::is_null_pointer_v<Name>)void SetMaterial(b2Fixture* fixture, const Name& material)
+    {
+        SetMaterialNamed(fixture, NameText(material));
+    }
+    template <class Name>
+    requires std::is_convertible_v<const Name&, std::string_view> &&
+        (!std::is_null_pointer_v<Name>)void SetMaterial(b2Body* body, const Name& material)
+    {
+        SetMaterialNamed(body, NameText(material));
+    }
     /// The fixture's material, or an invalid id (also for a null fixture).
     MaterialId Material(const b2Fixture* fixture) const;
     /// Call before b2Body::DestroyFixture (Box2D 2.4 tells no listener about it): forgets the fixture's
@@ -184,6 +197,11 @@ private:
     void CheckMaterialArguments(const void* target, const char* targetField, MaterialId material) const;
     /// The id of the config's material `name`; throws InputError (field "material") when it has none.
     MaterialId RequireMaterial(std::string_view name) const;
+    void SetMaterialNamed(b2Fixture* fixture, std::string_view material);
+    void SetMaterialNamed(b2Body* body, std::string_view material);
+    /// A name as text; throws InputError (field "material") for a null pointer.
+    static std::string_view NameText(const char* name);
+    static std::string_view NameText(std::string_view name) { return name; }
 
     b2World& m_world;
     EffectsConfig m_config;

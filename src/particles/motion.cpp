@@ -84,14 +84,25 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // `placement` itself that no wall stops ends on it, never behind. `spawned`: the particle was put where it
 // started after the bodies moved (they did not pass over anything of it).
 bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, const Touch& placement,
-          bool spawned, b2Vec2& position)
+          bool spawned, const b2Body* pusher, b2Vec2& position)
 {
     b2Vec2 push = target - position;
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
-        if (!geometry.HasStatic() ||
-            !geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall))
+        const bool metStatic =
+            geometry.HasStatic() && geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall);
+        // Another moving body where it stands now stops the push as a wall does: a push goes through no
+        // body (a box pushing a spark into the plank it lands on).
+        SweepResult other;
+        if (geometry.SweepMoving(position, position + push, side, true, other, pusher) &&
+            (!metStatic || other.touch.t < wall.touch.t))
+        {
+            wall.touch.t = other.touch.t;
+            wall.touch.position = other.firstTouch;
+            wall.touch.normal = other.touch.normal;
+        }
+        else if (!metStatic)
         {
             position += push;
             break;
@@ -257,11 +268,12 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 *viaX = position.x;
                 *viaY = position.y;
             }
-            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, spawned, position);
+            const b2Body* pusher = hit.material->body;
+            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, spawned, pusher, position);
             if (crushed)
             {
                 position = free;
-                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, position);
+                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, pusher, position);
             }
             // Met the body before any static geometry (a long step on a particle resting on a box that
             // stands on the ground sweeps it through the box to the ground): the static touches are on the

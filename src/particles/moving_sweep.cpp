@@ -81,7 +81,7 @@ bool WorldGeometry::MayMeet(const MovingBody& body, b2Vec2 centreAtStart, float 
 }
 
 bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
-                                SweepResult& result) const
+                                SweepResult& result, const b2Body* except) const
 {
     const float r = side.radius;
     const b2AABB query = PathBox(start, end, r);
@@ -91,7 +91,8 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
         [&](std::uint32_t index)
         {
             const MovingShape& moving = m_movingShapes[index];
-            if (!side.Accepts(moving.categoryBits, moving.maskBits))
+            if (!side.Accepts(moving.categoryBits, moving.maskBits) ||
+                (except != nullptr && m_movingMaterials[moving.material].body == except))
             {
                 return;
             }

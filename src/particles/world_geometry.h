@@ -173,9 +173,10 @@ public:
     /// and ends outside the body where the body is at the end of the step: pushed or carried, never
     /// left inside. `result`: that end position (world), the surface's normal and velocity there.
     /// `placedAfter`: the disc was put at `start` after the bodies moved (spawned since the last step, where
-    /// they stand at the end of it): for it the bodies stand still at their end poses.
+    /// they stand at the end of it): for it the bodies stand still at their end poses. `except`: a body
+    /// not to meet (null: none).
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
-                     SweepResult& result) const;
+                     SweepResult& result, const b2Body* except = nullptr) const;
 
     /// The most a moving body turns (rad) within one piece of a moving sweep.
     static constexpr float kMaxTurn = 0.1f;

@@ -11,8 +11,10 @@
 #include "test_world.h"
 
 #include <cmath>
+#include <cstddef>
 #include <gtest/gtest.h>
 #include <limits>
+#include <string>
 
 namespace cfx::test
 {
@@ -376,6 +378,12 @@ TEST(EffectsMisuse, SetMaterialRefusesANullTargetAndAMaterialTheConfigLacks)
     EXPECT_FALSE(effects.Material(scene.box->GetFixtureList()).IsValid());
 }
 
+template <class Value>
+concept CanSetMaterialWith = requires(Effects& effects, b2Fixture* fixture, Value value)
+{
+    effects.SetMaterial(fixture, value);
+};
+
 // A trial: SetMaterial(fixture, FindMaterial("steal")) removes the material without a word (FindMaterial
 // gives an invalid id for an unknown name). By name, a misspelt material is refused with the nearest one.
 TEST(EffectsMisuse, SetMaterialByNameRefusesAnUnknownNameAndNamesTheNearest)
@@ -395,6 +403,21 @@ TEST(EffectsMisuse, SetMaterialByNameRefusesAnUnknownNameAndNamesTheNearest)
     const Diagnostic capital = Refusal([&] { effects.SetMaterial(scene.ground, "Concrete"); });
     EXPECT_NE(capital.message.find("did you mean \"concrete\"?"), std::string::npos) << capital.message;
     EXPECT_EQ(Refusal([&] { effects.SetMaterial(box, ""); }).path, "material");
+    const char* noName = nullptr;
+    EXPECT_EQ(Refusal([&] { effects.SetMaterial(box, noName); }).path, "material");
+    const std::string rubber = "rubber";
+    effects.SetMaterial(box, rubber);
+    EXPECT_EQ(effects.Material(box), scene.Material("rubber"));
+    effects.SetMaterial(box, std::string_view("steel"));
+    // {} is still the id's overload (it removes the material); 0, NULL and nullptr do not compile (a trial:
+    // they were taken for a null name and crashed).
+    static_assert(CanSetMaterialWith<MaterialId> && CanSetMaterialWith<const char*> &&
+                  CanSetMaterialWith<std::string>);
+    static_assert(!CanSetMaterialWith<int> && !CanSetMaterialWith<long> &&
+                  !CanSetMaterialWith<std::nullptr_t>);
+    effects.SetMaterial(scene.ground, {});
+    EXPECT_FALSE(effects.Material(scene.ground->GetFixtureList()).IsValid());
+    effects.SetMaterial(scene.ground, "concrete");
     EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Fixture*>(nullptr), "steel"); }).path,
               "fixture");
     EXPECT_EQ(Refusal([&] { effects.SetMaterial(static_cast<b2Body*>(nullptr), "steal"); }).path, "body");
