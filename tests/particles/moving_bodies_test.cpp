@@ -30,6 +30,33 @@ std::uint32_t BelowGround(const ParticleView& view)
     return below;
 }
 
+// A kinematic plank 4 x 0.2 m at (0, 2) rising at `rise` m/s.
+b2Body* CreateRisingPlank(b2World& world, float rise)
+{
+    b2BodyDef def;
+    def.type = b2_kinematicBody;
+    def.position = b2Vec2(0.0f, 2.0f);
+    b2Body* plank = world.CreateBody(&def);
+    b2PolygonShape shape;
+    shape.SetAsBox(2.0f, 0.1f);
+    plank->CreateFixture(&shape, 1.0f);
+    plank->SetLinearVelocity(b2Vec2(0.0f, rise));
+    return plank;
+}
+
+// Live particles on one side of the plank (CreateRisingPlank): `side` 1 over its top, -1 under its bottom.
+std::uint32_t LiveBeside(const ParticleView& view, const b2Body& plank, float side)
+{
+    std::uint32_t beside = 0;
+    for (std::uint32_t i = 0; i < view.count; ++i)
+    {
+        const std::uint32_t slot = view.Slot(i);
+        const b2Vec2 local = plank.GetLocalPoint(b2Vec2(view.positionX[slot], view.positionY[slot]));
+        beside += view.life[slot] > 0.0f && side * local.y > 0.1f ? 1u : 0u;
+    }
+    return beside;
+}
+
 using Case = std::tuple<Ground, int>; // ground, steps per second
 
 std::string CaseName(const ::testing::TestParamInfo<Case>& info)
@@ -213,14 +240,7 @@ TEST(MovingBodiesSpawnOrder, SparksSpawnedBeforeOrAfterTheWorldStepRideARisingPl
             {
                 const float dt = 1.0f / static_cast<float>(hz);
                 TestWorld scene;
-                b2BodyDef plankDef;
-                plankDef.type = b2_kinematicBody;
-                plankDef.position = b2Vec2(0.0f, 2.0f);
-                b2Body* plank = scene.world->CreateBody(&plankDef);
-                b2PolygonShape plankShape;
-                plankShape.SetAsBox(2.0f, 0.1f);
-                plank->CreateFixture(&plankShape, 1.0f);
-                plank->SetLinearVelocity(b2Vec2(0.0f, rise));
+                b2Body* plank = CreateRisingPlank(*scene.world, rise);
                 const EffectsConfig config = DefaultPreset();
                 ParticleSystemOptions options;
                 options.checkParticles = true;
@@ -253,15 +273,7 @@ TEST(MovingBodiesSpawnOrder, SparksSpawnedBeforeOrAfterTheWorldStepRideARisingPl
                     system.Step(dt, scene.world->GetGravity());
                     const ParticleView view = system.View();
                     ASSERT_EQ(view.count, 100u) << where;
-                    std::uint32_t over = 0;
-                    for (std::uint32_t i = 0; i < view.count; ++i)
-                    {
-                        const std::uint32_t slot = view.Slot(i);
-                        const b2Vec2 local =
-                            plank->GetLocalPoint(b2Vec2(view.positionX[slot], view.positionY[slot]));
-                        over += view.life[slot] > 0.0f && local.y > 0.1f ? 1u : 0u;
-                    }
-                    EXPECT_EQ(over, 100u) << where << ", step " << step;
+                    EXPECT_EQ(LiveBeside(view, *plank, 1.0f), 100u) << where << ", step " << step;
                 }
                 EXPECT_EQ(system.Counters().crushed, 0u) << where;
                 EXPECT_EQ(system.Counters().stepsInside, 0u) << where;
@@ -279,14 +291,7 @@ TEST(MovingBodiesSpawnOrder, SpawnsAfterTheWorldStepStayPutWhateverHappensToBodi
     for (int change = 0; change < 4; ++change)
     {
         TestWorld scene;
-        b2BodyDef plankDef;
-        plankDef.type = b2_kinematicBody;
-        plankDef.position = b2Vec2(0.0f, 2.0f);
-        b2Body* plank = scene.world->CreateBody(&plankDef);
-        b2PolygonShape plankShape;
-        plankShape.SetAsBox(2.0f, 0.1f);
-        plank->CreateFixture(&plankShape, 1.0f);
-        plank->SetLinearVelocity(b2Vec2(0.0f, 5.0f));
+        b2Body* plank = CreateRisingPlank(*scene.world, 5.0f);
         b2Body* resting = scene.CreateBox(b2Vec2(30.0f, 0.5f), 0.5f, 0.5f, 0.5f);
         resting->SetGravityScale(0.0f); // a body at rest
         const EffectsConfig config = DefaultPreset();
@@ -327,14 +332,7 @@ TEST(MovingBodiesSpawnOrder, SpawnsAfterTheWorldStepStayPutWhateverHappensToBodi
         system.Step(dt, scene.world->GetGravity());
         const ParticleView view = system.View();
         ASSERT_EQ(view.count, 100u) << change;
-        std::uint32_t under = 0;
-        for (std::uint32_t i = 0; i < view.count; ++i)
-        {
-            const std::uint32_t slot = view.Slot(i);
-            const b2Vec2 local = plank->GetLocalPoint(b2Vec2(view.positionX[slot], view.positionY[slot]));
-            under += view.life[slot] > 0.0f && local.y < -0.1f ? 1u : 0u;
-        }
-        EXPECT_EQ(under, 100u) << "change " << change;
+        EXPECT_EQ(LiveBeside(view, *plank, -1.0f), 100u) << "change " << change;
         EXPECT_EQ(system.Counters().crushed, 0u) << change;
         EXPECT_EQ(system.Counters().passedThroughMoving, 0u) << change;
     }

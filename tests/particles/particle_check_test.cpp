@@ -53,20 +53,29 @@ std::uint64_t PassedThroughCount(const b2World& world, const std::vector<Checked
     return counts.passedThrough;
 }
 
+// A kinematic body of one fixture at the origin, moved by one world step at these velocities (which also
+// puts its fixture in the broad phase where it went).
+b2Body* MovedKinematicBody(b2World& world, const b2Shape& shape, b2Vec2 velocity, float angularVelocity)
+{
+    b2BodyDef def;
+    def.type = b2_kinematicBody;
+    b2Body* body = world.CreateBody(&def);
+    body->CreateFixture(&shape, 1.0f);
+    body->SetLinearVelocity(velocity);
+    body->SetAngularVelocity(angularVelocity);
+    world.Step(kCheckDt, 8, 3);
+    return body;
+}
+
 } // namespace
 
 TEST(ParticleCheck, CountsAParticleThatWentThroughAMovingBodyAndNoOther)
 {
     b2World world(b2Vec2(0.0f, 0.0f));
     // A plank 4 x 0.2 m rising at 12 m/s: 0.4 m in the step, from -0.1 .. 0.1 to 0.3 .. 0.5.
-    b2BodyDef plankDef;
-    plankDef.type = b2_kinematicBody;
-    b2Body* plank = world.CreateBody(&plankDef);
     b2PolygonShape plankShape;
     plankShape.SetAsBox(2.0f, 0.1f);
-    plank->CreateFixture(&plankShape, 1.0f);
-    plank->SetLinearVelocity(b2Vec2(0.0f, 12.0f));
-    world.Step(kCheckDt, 8, 3); // moves it (and puts its fixture in the broad phase where it went)
+    b2Body* plank = MovedKinematicBody(world, plankShape, b2Vec2(0.0f, 12.0f), 0.0f);
     const b2Vec2 centre = plank->GetPosition();
     ASSERT_NEAR(centre.y, 0.4f, 1e-4f);
     const float top = centre.y + 0.1f, bottom = centre.y - 0.1f, rise = 0.4f;
@@ -108,14 +117,9 @@ TEST(ParticleCheck, CountsAParticleThatWentThroughAMovingBodyAndNoOther)
 TEST(ParticleCheck, CountsAParticleThatWentThroughASpinningWheel)
 {
     b2World world(b2Vec2(0.0f, 0.0f));
-    b2BodyDef wheelDef;
-    wheelDef.type = b2_kinematicBody;
-    b2Body* wheel = world.CreateBody(&wheelDef);
     b2CircleShape rim;
     rim.m_radius = 0.4f;
-    wheel->CreateFixture(&rim, 1.0f);
-    wheel->SetAngularVelocity(60.0f); // 2 rad in the step
-    world.Step(kCheckDt, 8, 3);
+    b2Body* wheel = MovedKinematicBody(world, rim, b2Vec2(0.0f, 0.0f), 60.0f); // 2 rad in the step
     // Riding the rim: flew off along its tangent (24.7 m/s), and the wheel put it back on the same point of
     // the rim, turned with it.
     const b2Vec2 onRim(0.411f, 0.0f);
