@@ -349,8 +349,7 @@ std::vector<Diagnostic> Validate(const EffectsConfig& config, std::string_view f
 
     CheckFields(check, "budget", config.budget, BudgetFields(), config);
     // Each rule keeps its touching contacts in a list of its own, each with room for budget.contacts.
-    const std::uint64_t contactRoom =
-        static_cast<std::uint64_t>(config.rules.size()) * config.budget.contacts;
+    const std::size_t contactRoom = config.ContactRoom();
     if (contactRoom > kMaxContactRoom)
     {
         check.Fail("budget.contacts",

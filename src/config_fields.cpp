@@ -413,8 +413,7 @@ const std::array kBudgetFields{
             "touching contacts (and body pairs) room is made for at creation, for each rule (about 800 "
             "bytes a contact a rule; rules times contacts at most 2^22): with no more touching one rule at "
             "once, neither the contact callbacks nor `Effects::Step` allocate for them (the particles' own "
-            "warm-up "
-            "in the first steps aside)",
+            "warm-up in the first steps aside)",
         .step = 64.0f},
     Field<B>{.name = "particleHits",
              .member = &B::particleHits,

@@ -176,6 +176,8 @@ struct ParticleSystem::Impl
     };
     SpawnSide spawnSide = SpawnSide::none;
     std::uint64_t spawnPoses = 0;
+    /// The moving bodies' poses, the system's own particle bodies left out (see cfx::MovingPoses).
+    std::uint64_t MovingPoses() const { return cfx::MovingPoses(world, anyBodyBacked ? &bodySet : nullptr); }
     particles::Workers workers;
     std::array<std::vector<b2Body*>, kMaxThreads> dead; // reserved to capacity when body-backed
     // While Effects emits (ParticleSystemAccess::DeferBodyDestruction), the bodies of the particles Spawn
@@ -562,7 +564,7 @@ void ParticleSystem::Spawn(const ParticleSpawn& spawn)
     impl.clearance[slot] = particles::kSpawnedClearance;
     if (impl.spawnSide == Impl::SpawnSide::none)
     {
-        impl.spawnPoses = MovingPoses(impl.world, impl.anyBodyBacked ? &impl.bodySet : nullptr);
+        impl.spawnPoses = impl.MovingPoses();
         impl.spawnSide = Impl::SpawnSide::posesNoted;
     }
     if (impl.anyBodyBacked)
@@ -714,8 +716,7 @@ void ParticleSystem::Advance(float dt, b2Vec2 gravity, bool collide)
         trust.clearance = impl.geometry.StaticBuilds() == impl.lastBuilds;
         trust.resting = trust.clearance && dt == impl.lastDt && gravity == impl.lastGravity;
         trust.spawnsAfterMoving =
-            impl.spawnSide != Impl::SpawnSide::posesNoted ||
-            MovingPoses(impl.world, impl.anyBodyBacked ? &impl.bodySet : nullptr) == impl.spawnPoses;
+            impl.spawnSide != Impl::SpawnSide::posesNoted || impl.MovingPoses() == impl.spawnPoses;
         impl.lastDt = dt;
         impl.lastGravity = gravity;
         impl.lastBuilds = impl.geometry.StaticBuilds();

@@ -75,6 +75,11 @@ struct EffectsDef
     ParticleSystemOptions particles{};                    ///< threads, and the particle check
 };
 
+/// What Effects::SetMaterial takes as a material's name: anything that converts to std::string_view (a
+/// literal, std::string, const char*), but not nullptr (nor an integer, which does not convert).
+template <class Name>
+concept MaterialName = std::is_convertible_v<const Name&, std::string_view> && !std::is_null_pointer_v<Name>;
+
 class Effects
 {
 public:
@@ -100,15 +105,11 @@ public:
     /// id, which removes the fixture's material without a word. Takes what converts to std::string_view
     /// (a literal, std::string, const char*: a null one throws, field "material") and nothing else, so
     /// SetMaterial(fixture, {}) still removes the material and SetMaterial(fixture, 0) does not compile.
-    template <class Name>
-    requires std::is_convertible_v<const Name&, std::string_view> &&
-        (!std::is_null_pointer_v<Name>)void SetMaterial(b2Fixture* fixture, const Name& material)
+    template <MaterialName Name> void SetMaterial(b2Fixture* fixture, const Name& material)
     {
         SetMaterialNamed(fixture, NameText(material));
     }
-    template <class Name>
-    requires std::is_convertible_v<const Name&, std::string_view> &&
-        (!std::is_null_pointer_v<Name>)void SetMaterial(b2Body* body, const Name& material)
+    template <MaterialName Name> void SetMaterial(b2Body* body, const Name& material)
     {
         SetMaterialNamed(body, NameText(material));
     }

@@ -42,6 +42,13 @@ constexpr std::uint32_t kBlock = 64;
 constexpr float kResting = -std::numeric_limits<float>::infinity();
 constexpr float kNothingToTouch = std::numeric_limits<float>::infinity();
 
+// Whether a clearance (as pass 1 leaves it, a step's flight taken off) marks a particle spawned since the
+// last step (kSpawnedClearance; a resting particle's -infinity is below it too).
+bool SpawnedMark(float mark)
+{
+    return mark <= kSpawnedClearance && mark != kResting;
+}
+
 // `mask` all ones: a, else b; without a branch.
 float Select(std::uint32_t mask, float a, float b)
 {
@@ -258,7 +265,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     if (geometry.HasMoving())
     {
         SweepResult hit;
-        const bool spawned = mark <= kSpawnedClearance && mark != kResting;
+        const bool spawned = SpawnedMark(mark);
         if (geometry.SweepMoving(start, position, type.side, spawned, hit))
         {
             // Where the body would put it; failing that (a wedge), where it met the body.
@@ -342,9 +349,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         // Listed for a moving body's sake only, it may still be clear of the static geometry. Spawned
         // before the bodies moved, it is swept as if it had been there all along.
         const float stored = pool.clearance[slot];
-        const bool spawnedBefore =
-            !trust.spawnsAfterMoving && stored <= kSpawnedClearance && stored != kResting;
-        const float mark = spawnedBefore ? kUnknownClearance : stored;
+        const float mark = SpawnedMark(stored) && !trust.spawnsAfterMoving ? kUnknownClearance : stored;
         const StaticPart part = trust.resting && mark == kResting ? StaticPart::resting
                                 : trust.clearance && mark >= 0.0f ? StaticPart::clear
                                                                   : StaticPart::sweep;
@@ -355,8 +360,7 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         const bool checking = pool.viaX != nullptr;
         if (checking)
         {
-            pool.placedAfter[slot] =
-                mark <= kSpawnedClearance && mark != kResting ? 1 : 0; // as Collide takes it
+            pool.placedAfter[slot] = SpawnedMark(mark) ? 1 : 0; // as Collide takes it
         }
         const float clearance =
             Collide(type, geometry, dt, part, mark, position, velocity, crushed, hardest,
