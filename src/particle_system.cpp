@@ -148,9 +148,10 @@ struct ParticleSystem::Impl
     std::vector<float> startX, startY;
     // Only with checkParticles: where a moving body's push took each particle from (PoolArrays::viaX).
     std::vector<float> viaX, viaY;
-    // Only with checkParticles: whether each particle was taken as placed after the bodies moved
-    // (PoolArrays::placedAfter).
-    std::vector<std::uint8_t> placedAfter;
+    // Only with checkParticles: where along its flight each particle's push began (PoolArrays::pushFraction).
+    std::vector<float> pushFraction;
+    // Only with checkParticles: what the check needs to know of each particle's step (PoolArrays::stepFlags).
+    std::vector<std::uint8_t> stepFlags;
     // Cold: bodies of body-backed particles (empty when no type is body-backed). bodySet holds the
     // bodies the system still owns: a body the application destroyed (ForgetBody) leaves it at once,
     // and its particle leaves the pool at the next Spawn or Step (DropForgotten).
@@ -218,7 +219,8 @@ struct ParticleSystem::Impl
                                      startX.empty() ? nullptr : startY.data(),
                                      viaX.empty() ? nullptr : viaX.data(),
                                      viaX.empty() ? nullptr : viaY.data(),
-                                     placedAfter.empty() ? nullptr : placedAfter.data(),
+                                     pushFraction.empty() ? nullptr : pushFraction.data(),
+                                     stepFlags.empty() ? nullptr : stepFlags.data(),
                                      capacity,
                                      head};
     }
@@ -462,7 +464,8 @@ ParticleSystem::ParticleSystem(b2World& world, std::span<const ParticleTypeDef> 
         impl.startY.resize(m_capacity);
         impl.viaX.resize(m_capacity);
         impl.viaY.resize(m_capacity);
-        impl.placedAfter.resize(m_capacity);
+        impl.pushFraction.resize(m_capacity);
+        impl.stepFlags.resize(m_capacity);
     }
     if (impl.anyBodyBacked)
     {
@@ -913,9 +916,10 @@ std::size_t ParticleSystem::MemoryBytes() const
     const Impl& impl = *m_impl;
     std::size_t bytes = static_cast<std::size_t>(m_capacity) * BytesPerSlot();
     bytes += impl.types.capacity() * sizeof(TypeParams) + impl.steps.capacity() * sizeof(particles::TypeStep);
-    bytes += (impl.startX.capacity() + impl.startY.capacity() + impl.viaX.capacity() + impl.viaY.capacity()) *
+    bytes += (impl.startX.capacity() + impl.startY.capacity() + impl.viaX.capacity() + impl.viaY.capacity() +
+              impl.pushFraction.capacity()) *
                  sizeof(float) +
-             impl.placedAfter.capacity();
+             impl.stepFlags.capacity();
     bytes += impl.hitSums.capacity() * sizeof(HitSums) + impl.hitOrder.capacity() * sizeof(std::uint32_t) +
              impl.hitGroups.capacity() * sizeof(ParticleHitGroup);
     return bytes + impl.geometry.Bytes();

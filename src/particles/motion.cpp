@@ -89,9 +89,11 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // and that surface's normal there, at the end of the step), and a moving body passed over where it ends
 // (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it). A push to
 // `placement` itself that no wall stops ends on it, never behind. `spawned`: the particle was put where it
-// started after the bodies moved (they did not pass over anything of it).
+// started after the bodies moved (they did not pass over anything of it). `from`: when in the step the push
+// begins (0..1; 1: from where the flight ended). `metMoving`: set when a moving body stopped the push
+// (another one, or the pusher once a wall turned the push).
 bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, const Touch& placement,
-          bool spawned, const b2Body* pusher, b2Vec2& position)
+          bool spawned, const b2Body* pusher, float from, b2Vec2& position, bool& metMoving)
 {
     b2Vec2 push = target - position;
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
@@ -99,15 +101,19 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         SweepResult wall;
         const bool metStatic =
             geometry.HasStatic() && geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall);
-        // Another moving body where it stands now stops the push as a wall does: a push goes through no
-        // body (a box pushing a spark into the plank it lands on).
+        // Another moving body stops the push as a wall does, met as it moves over the rest of the step: a
+        // push goes through no body (a box pushing a spark into the plank it lands on, a plank rising
+        // through where a spark met a box). So does the pusher once a wall turned the push away from
+        // where it put the particle (a wheel on the ground: along the ground, not under the wheel).
         SweepResult other;
-        if (geometry.SweepMoving(position, position + push, side, true, other, pusher) &&
+        if (geometry.SweepMoving(position, position + push, side, from, other,
+                                 sweep == 0 ? pusher : nullptr) &&
             (!metStatic || other.touch.t < wall.touch.t))
         {
             wall.touch.t = other.touch.t;
             wall.touch.position = other.firstTouch;
             wall.touch.normal = other.touch.normal;
+            metMoving = true;
         }
         else if (!metStatic)
         {
@@ -115,6 +121,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
             break;
         }
         position = wall.touch.position;
+        from += wall.touch.t * (1.0f - from);
         // Slide: what is left of the push, less its part into the wall.
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
         const float into = b2Dot(rest, wall.touch.normal);
@@ -138,6 +145,15 @@ bool StaticOverlapsDeeper(const WorldGeometry& geometry, const ParticleSide& sid
     return geometry.SweepStatic(SweepInput{position, b2Vec2(0.0f, 0.0f), side.radius}, side, inside) &&
            inside.touch.t == 0.0f && inside.touch.depth > 0.5f * side.radius;
 }
+
+// Where a moving body's push took a particle from, for the particle check (PoolArrays::viaX,
+// PoolArrays::pushFraction).
+struct PushedFrom
+{
+    b2Vec2 flown{0.0f, 0.0f}; ///< where its flight ended (after the static sweeps)
+    float fraction = 1.0f;    ///< where along the flight the push began
+    bool pushed = false;
+};
 
 // What a particle's mark says of its motion against the static geometry this step.
 enum class StaticPart : std::uint8_t
@@ -190,12 +206,13 @@ b2Vec2 Bounce(const SweepResult& hit, b2Vec2 velocity, float touchSpeed, const T
 // clearance after the step (see PoolArrays): kResting at a fixed point of the static sweep,
 // kUnknownClearance after a touch. `crushed`: set when a moving body squeezed it against other geometry
 // with no free place (see Push), or when the static sweeps leave it more than half its radius inside a
-// static shape (it started in two at once). `hardest`: its hardest touch of the step. `viaX`, `viaY` (null
-// unless the particle check is on): set to where a moving body's push took it from (after the static
-// sweeps), left as they were when nothing pushed it. A pointer, not a value: the common path keeps nothing
-// more alive (a value in a register cost the debris scene 3 %).
+// static shape (it started in two at once). `hardest`: its hardest touch of the step. `pushedFrom` (null
+// unless the particle check is on): set when a moving body pushed it, to where its flight ended (after the
+// static sweeps) and where along the flight the push began; left as it was when nothing pushed it. A
+// pointer, not a value: the common path keeps nothing more alive (a value in a register cost the debris
+// scene 3 %).
 float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, StaticPart part, float mark,
-              b2Vec2& position, b2Vec2& velocity, bool& crushed, Hardest& hardest, float* viaX, float* viaY)
+              b2Vec2& position, b2Vec2& velocity, bool& crushed, Hardest& hardest, PushedFrom* pushedFrom)
 {
     const b2Vec2 start = position;
     const b2Vec2 stepVelocity = velocity;
@@ -205,6 +222,8 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     float clearance = kUnknownClearance;
     bool fixedPoint = false;
     bool touched = false;
+    // A static touch bent its path: anything but a slide from the start (a particle on the ground).
+    bool bent = false;
     if (part == StaticPart::resting)
     {
         velocity.SetZero();
@@ -235,6 +254,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 break;
             }
             staticReach2 = touched ? staticReach2 : b2DistanceSquared(hit.touch.position, start);
+            bent = bent || sweep > 0 || hit.touch.t > 0.0f;
             touched = true;
             startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
@@ -266,21 +286,52 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     {
         SweepResult hit;
         const bool spawned = SpawnedMark(mark);
-        if (geometry.SweepMoving(start, position, type.side, spawned, hit))
+        if (geometry.SweepMoving(start, position, type.side, spawned ? 1.0f : 0.0f, hit))
         {
-            // Where the body would put it; failing that (a wedge), where it met the body.
+            // Where the body would put it, pushed there. First from where and when the flight met the
+            // body: from the touch on the particle went with the body, so the rest of its flight (through
+            // another moving body, say) never happened. That point is on the chord from the start to where
+            // the static sweeps left the particle: on its path (a slide along the ground too), unless a
+            // static touch bent the path. When that push leaves it squeezed, from where the flight ended
+            // (outside the static geometry: a particle flown past an edge's end and pushed down beyond it
+            // goes around the end), if the flight met no other moving body after the touch; failing that
+            // too (a wedge), back to where it met the body. Stopped by a moving body on the way (another,
+            // or the pusher after a wall turned the push), it was squeezed: when a moving body went on over
+            // where it was left (a plank turning through a spark a box had pushed against it, a box sliding
+            // over a spark in the gap under it), it went through it.
             const b2Vec2 free = position;
-            if (viaX != nullptr)
+            struct Attempt
             {
-                *viaX = position.x;
-                *viaY = position.y;
-            }
+                b2Vec2 from;
+                float time; // when in the step the push begins (0..1)
+                b2Vec2 to;
+            };
+            const Attempt attempts[] = {{hit.firstTouch, spawned ? 1.0f : hit.touch.t, hit.touch.position},
+                                        {free, 1.0f, hit.touch.position},
+                                        {free, 1.0f, hit.firstTouch}};
             const b2Body* pusher = hit.material->body;
-            crushed = !Push(geometry, type.side, hit.touch.position, hit.touch, spawned, pusher, position);
-            if (crushed)
+            for (int k = bent ? 1 : 0; k < 3; ++k)
             {
-                position = free;
-                crushed = !Push(geometry, type.side, hit.firstTouch, hit.touch, spawned, pusher, position);
+                const Attempt& attempt = attempts[k];
+                SweepResult other;
+                if (k == 1 && !bent &&
+                    geometry.SweepMoving(hit.firstTouch, free, type.side, attempts[0].time, other, pusher))
+                {
+                    break; // crushed: the flight's end is beyond another moving body
+                }
+                bool metMoving = false;
+                position = attempt.from;
+                if (pushedFrom != nullptr)
+                {
+                    *pushedFrom = PushedFrom{free, k == 0 ? hit.touch.t : 1.0f, true};
+                }
+                crushed = !Push(geometry, type.side, attempt.to, hit.touch, spawned, pusher, attempt.time,
+                                position, metMoving) ||
+                          (metMoving && geometry.MovingPassesOver(position, type.side, attempt.time));
+                if (!crushed)
+                {
+                    break;
+                }
             }
             // Met the body before any static geometry (a long step on a particle resting on a box that
             // stands on the ground sweeps it through the box to the ground): the static touches are on the
@@ -358,13 +409,21 @@ void SweepListed(const PoolArrays& pool, const TypeStep* types, const WorldGeome
         bool crushed = false;
         Hardest hardest;
         const bool checking = pool.viaX != nullptr;
+        PushedFrom pushedFrom;
+        const float clearance = Collide(type, geometry, dt, part, mark, position, velocity, crushed, hardest,
+                                        checking ? &pushedFrom : nullptr);
         if (checking)
         {
-            pool.placedAfter[slot] = SpawnedMark(mark) ? 1 : 0; // as Collide takes it
+            // As Collide took it.
+            pool.stepFlags[slot] = static_cast<std::uint8_t>((SpawnedMark(mark) ? kPlacedAfterFlag : 0) |
+                                                             (pushedFrom.pushed ? kPushedFlag : 0));
+            if (pushedFrom.pushed)
+            {
+                pool.viaX[slot] = pushedFrom.flown.x;
+                pool.viaY[slot] = pushedFrom.flown.y;
+                pool.pushFraction[slot] = pushedFrom.fraction;
+            }
         }
-        const float clearance =
-            Collide(type, geometry, dt, part, mark, position, velocity, crushed, hardest,
-                    checking ? pool.viaX + slot : nullptr, checking ? pool.viaY + slot : nullptr);
         if (!Sane(position) || !Sane(velocity))
         {
             // A surface's numbers threw it out of the world (a restitution of 1e30): it dies where it
@@ -463,7 +522,7 @@ std::uint32_t FlyBlock(const PoolArrays& pool, const TypeStep* types, float dt, 
                 pool.startY[write] = start.y;
                 pool.viaX[write] = start.x; // a straight flight; pass 2 notes a push
                 pool.viaY[write] = start.y;
-                pool.placedAfter[write] = 0; // pass 2 notes a spawn taken as placed after the bodies moved
+                pool.stepFlags[write] = 0; // pass 2 notes a push, and a spawn taken as placed after
             }
             if (pool.body != nullptr)
             {
@@ -563,7 +622,8 @@ void MoveParticles(const PoolArrays& pool, std::uint32_t from, std::uint32_t to,
             pool.startY[write] = pool.startY[read];
             pool.viaX[write] = pool.viaX[read];
             pool.viaY[write] = pool.viaY[read];
-            pool.placedAfter[write] = pool.placedAfter[read];
+            pool.pushFraction[write] = pool.pushFraction[read];
+            pool.stepFlags[write] = pool.stepFlags[read];
         }
         if (pool.body != nullptr)
         {

@@ -27,6 +27,12 @@ inline constexpr float kUnknownClearance = -std::numeric_limits<float>::min();
 /// motion of that step over it. Still below zero after a step's flight is taken off it.
 inline constexpr float kSpawnedClearance = -std::numeric_limits<float>::max();
 
+/// PoolArrays::stepFlags: the particle was just spawned and taken as placed after the bodies moved (the
+/// moving bodies' motion was not swept against it: StepTrust::spawnsAfterMoving).
+inline constexpr std::uint8_t kPlacedAfterFlag = 1;
+/// PoolArrays::stepFlags: a moving body pushed it (from via; a resting particle's via is its start).
+inline constexpr std::uint8_t kPushedFlag = 2;
+
 /// The ring of particle arrays. Slot of logical index i: (head + i) mod capacity.
 struct PoolArrays
 {
@@ -52,9 +58,12 @@ struct PoolArrays
     /// Null unless checking, with startX.
     float* viaX;
     float* viaY;
-    /// 1 where the particle was just spawned and taken as placed after the bodies moved (the moving bodies'
-    /// motion was not swept against it: StepTrust::spawnsAfterMoving), else 0. Null unless checking.
-    std::uint8_t* placedAfter;
+    /// Where along start -> via the push began (0..1; 1: at via, the flight's end; the touch's fraction
+    /// when it began where the flight met the body). Null unless checking.
+    float* pushFraction;
+    /// What the check needs to know of each particle's last step: kPlacedAfterFlag, kPushedFlag. Null
+    /// unless checking.
+    std::uint8_t* stepFlags;
     std::uint32_t capacity;
     std::uint32_t head;
 

@@ -6,6 +6,7 @@
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
+#include <cmath>
 
 namespace cfx::particles
 {
@@ -47,6 +48,11 @@ bool SweepShape(const SweepInput& in, const b2Shape& shape, int child, Touch& to
 
 } // namespace
 
+b2Vec2 WorldGeometry::MovingBody::CenterAt(float f) const
+{
+    return f >= 1.0f ? center : f <= 0.0f ? centerBefore : centerBefore + f * (center - centerBefore);
+}
+
 b2Transform WorldGeometry::MovingBody::At(float f) const
 {
     if (f >= 1.0f)
@@ -80,11 +86,13 @@ bool WorldGeometry::MayMeet(const MovingBody& body, b2Vec2 centreAtStart, float 
     return b2Dot(nearest, nearest) <= within * within;
 }
 
-bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
-                                SweepResult& result, const b2Body* except) const
+bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, float from,
+                                SweepResult& result, const b2Body* except, LeavingTouch leaving) const
 {
     const float r = side.radius;
     const b2AABB query = PathBox(start, end, r);
+    const float left = 1.0f - from; // of the step, from `from`
+    const bool wholeStep = from <= 0.0f;
     bool found = false;
     m_movingGrid.Query(
         query,
@@ -101,31 +109,37 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                 return;
             }
             const MovingBody& body = m_movingBodies[moving.body];
-            if (!MayMeet(body, placedAfter ? body.center : body.centerBefore, moving.reach, start, end, r))
+            if (!MayMeet(body, wholeStep ? body.centerBefore : body.CenterAt(from), moving.reach, start, end,
+                         r))
             {
                 return;
             }
 
             // The disc's path in the body's frame, piece by piece: from where it was in the frame at the
             // piece's start to where it is in the frame at the piece's end (one piece, in the end pose,
-            // for a disc placed after the body moved).
-            const int pieces = placedAfter ? 1 : body.pieces;
+            // from the end of the step). A piece is a fraction `perPiece` of the path and of the time left.
+            const int pieces =
+                wholeStep ? body.pieces
+                : left > 0.0f
+                    ? std::max(1, static_cast<int>(std::ceil(left * static_cast<float>(body.pieces))))
+                    : 1;
             const float perPiece = 1.0f / static_cast<float>(pieces);
-            b2Transform frame = placedAfter ? body.after : body.before;
-            b2Vec2 from = b2MulT(frame, start);
+            b2Transform frame = body.At(from);
+            b2Vec2 pieceStart = b2MulT(frame, start);
             Touch local;
             float t = 2.0f;
             for (int piece = 0; piece < pieces; ++piece)
             {
                 const float f = piece + 1 == pieces ? 1.0f : static_cast<float>(piece + 1) * perPiece;
-                frame = body.At(f);
+                frame = body.At(from + f * left);
                 const b2Vec2 to = b2MulT(frame, start + f * (end - start));
-                if (SweepShape(SweepInput{from, to - from, r}, *moving.shape, moving.child, local))
+                if (SweepShape(SweepInput{pieceStart, to - pieceStart, r}, *moving.shape, moving.child,
+                               local))
                 {
                     t = (static_cast<float>(piece) + local.t) * perPiece;
                     break;
                 }
-                from = to;
+                pieceStart = to;
             }
             if (t > 1.0f || t > result.touch.t || (t == result.touch.t && local.depth <= result.touch.depth))
             {
@@ -146,12 +160,23 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                                   b2MixFriction(side.friction, m_movingMaterials[moving.material].friction) *
                                       -into);
             }
+            else if (t > 0.0f)
+            {
+                // Came onto the surface, yet the rest leaves it: only a turning body's arc does that (the
+                // chord to its end pose cuts across the turn, where the arc went on into the body). The
+                // body carries the disc: it ends on the surface.
+                rest -= into * normal;
+            }
             b2Vec2 final = local.position + rest;
             Touch out;
             if (SweepShape(SweepInput{final, b2Vec2(0.0f, 0.0f), r}, *moving.shape, moving.child, out))
             {
                 final = out.position;
                 normal = out.normal;
+            }
+            else if (t == 0.0f && into >= 0.0f && leaving == LeavingTouch::ignored)
+            {
+                return; // it starts on (or in) the shape and leaves it: the body moves it nowhere
             }
             result.firstTouch = start + t * (end - start);
             result.touch.t = t;
@@ -166,12 +191,12 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
     return found;
 }
 
-bool WorldGeometry::MovingPassesOver(b2Vec2 point, const ParticleSide& side) const
+bool WorldGeometry::MovingPassesOver(b2Vec2 point, const ParticleSide& side, float from) const
 {
     ParticleSide core = side;
     core.radius = 0.25f * side.radius;
     SweepResult passed;
-    return SweepMoving(point, point, core, false, passed);
+    return SweepMoving(point, point, core, from, passed, nullptr, LeavingTouch::counts);
 }
 
 bool WorldGeometry::MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const

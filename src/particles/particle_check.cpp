@@ -134,16 +134,18 @@ b2Vec2 Entry(const b2Shape& shape, b2Vec2 a, b2Vec2 b, const Deepest& deepest)
 
 // Whether the particle went through the moving fixture deeper than `depth`, from outside it to outside it,
 // seen from its body. The particle was at `start` when the step began, flew in a straight line at a
-// constant speed to `flown` (where a push began; `end` when nothing pushed it), and is at `end` now. The
-// body's pose goes from the start of the step (as Box2D integrated it) to now as Box2D moves it (its centre
-// along a line, its angle at a constant rate), followed in pieces of at most kCheckTurn.
+// constant speed towards `flown` (where its flight would have ended, when `pushed`, had no push begun at
+// `fraction` of it; else `end`), and is at `end` now. The body's pose goes from the start of the step (as
+// Box2D integrated it) to now as Box2D moves it (its centre along a line, its angle at a constant rate),
+// followed in pieces of at most kCheckTurn.
 // - Not pushed, its whole path in the body's frame is known: it must not go deeper than `depth`.
 // - Pushed, the push's own path is not known. Where the flight came onto the body, the particle should
 //   have stayed on that side of it: the path from there to where it ended (in the body's frame now) must
 //   not cut deeper than `depth` through the body to a face turned away from that one (a slide around a
 //   corner cuts the corner too, but comes out of a face beside the first). A push alone (no flight onto
 //   this body: pushed by another) is tested from where it began.
-bool PassedThrough(const b2Fixture& fixture, b2Vec2 start, b2Vec2 flown, b2Vec2 end, float depth, float dt)
+bool PassedThrough(const b2Fixture& fixture, b2Vec2 start, b2Vec2 flown, b2Vec2 end, bool pushed,
+                   float fraction, float depth, float dt)
 {
     const b2Body& body = *fixture.GetBody();
     const b2Shape& shape = *fixture.GetShape();
@@ -170,12 +172,16 @@ bool PassedThrough(const b2Fixture& fixture, b2Vec2 start, b2Vec2 flown, b2Vec2 
     {
         return false; // started or ended inside: not a pass (an end inside counts as inside)
     }
-    const bool pushed = !(flown.x == end.x && flown.y == end.y);
-    b2Vec2 entry = b2MulT(body.GetTransform(), flown); // no flight onto the body: where the push began
-    const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(turn) / kCheckTurn)), 1, kCheckPieces);
+    // Pushed, it flew only until the push began (`fraction` of the step and of the flight); no flight onto
+    // the body before that: where the push began.
+    const float until = pushed ? fraction : 1.0f;
+    b2Vec2 entry = until >= 1.0f ? b2MulT(body.GetTransform(), flown)
+                                 : b2MulT(frameAt(until), start + until * (flown - start));
+    const int pieces =
+        std::clamp(static_cast<int>(std::ceil(std::abs(until * turn) / kCheckTurn)), 1, kCheckPieces);
     for (int piece = 1; piece <= pieces; ++piece)
     {
-        const float f = static_cast<float>(piece) / static_cast<float>(pieces);
+        const float f = until * (static_cast<float>(piece) / static_cast<float>(pieces));
         const b2Vec2 to = piece == pieces ? entry : b2MulT(frameAt(f), start + f * (flown - start));
         const Deepest deepest = DeepestOnSegment(shape, from, to);
         if (!pushed && deepest.depth > depth)
@@ -215,12 +221,16 @@ void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep
         }
         const b2Vec2 start(pool.startX[slot], pool.startY[slot]);
         const b2Vec2 end(pool.positionX[slot], pool.positionY[slot]);
-        // The path the step took: from the start to where a moving body's push took it from (the start
-        // itself when nothing pushed it), then to the end. Its chord can cut an edge the particle went
-        // around (flown past the edge's end, then pushed down beyond it).
+        // Where its flight ended, when a moving body pushed it (its start, for a particle at rest), else the
+        // end; and where along the flight the push began (where the flight met the body, or its end).
         const b2Vec2 via(pool.viaX[slot], pool.viaY[slot]);
-        // Where its flight ended: where a push began, or the end when nothing pushed it (via = start).
-        const b2Vec2 flown = via.x == start.x && via.y == start.y ? end : via;
+        const bool pushed = (pool.stepFlags[slot] & kPushedFlag) != 0;
+        const b2Vec2 flown = pushed ? via : end;
+        const float fraction = pushed ? pool.pushFraction[slot] : 1.0f;
+        // The path the step took: from the start to where the push began (the start itself when nothing
+        // pushed it), then to the end. Its chord can cut an edge the particle went around (flown past the
+        // edge's end, then pushed down beyond it).
+        const b2Vec2 pushStart = fraction >= 1.0f ? via : start + fraction * (via - start);
         b2AABB box;
         box.lowerBound = b2Min(b2Min(start, via), end);
         box.upperBound = b2Max(b2Max(start, via), end);
@@ -232,7 +242,7 @@ void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep
         const float passDepth = type.side.radius + b2_linearSlop;
         // Spawned after the bodies moved, it was never where they passed: seen from the bodies as they are
         // now (a step of no time).
-        const bool placedAfter = pool.placedAfter[slot] != 0;
+        const bool placedAfter = (pool.stepFlags[slot] & kPlacedAfterFlag) != 0;
         // Each child once: a fixture of one child (polygon, circle, edge) is met once, a chain once per
         // segment near the path.
         detail::QueryChildren(world, box,
@@ -243,10 +253,11 @@ void CheckParticles(const b2World& world, const PoolArrays& pool, const TypeStep
                                   {
                                       inside = inside || fixture->TestPoint(end);
                                       crossed = crossed || (fixture->GetBody()->GetType() == b2_staticBody &&
-                                                            (PathCrosses(*fixture, child, start, via) ||
-                                                             PathCrosses(*fixture, child, via, end)));
-                                      passed = passed || PassedThrough(*fixture, start, flown, end, passDepth,
-                                                                       placedAfter ? 0.0f : dt);
+                                                            (PathCrosses(*fixture, child, start, pushStart) ||
+                                                             PathCrosses(*fixture, child, pushStart, end)));
+                                      passed = passed ||
+                                               PassedThrough(*fixture, start, flown, end, pushed, fraction,
+                                                             passDepth, placedAfter ? 0.0f : dt);
                                   }
                                   return !(inside && crossed && passed);
                               });

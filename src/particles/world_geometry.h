@@ -135,6 +135,15 @@ enum class StaticWatch : std::uint8_t
     onRequest, ///< built once; again only after Invalidate (the application says when it changed)
 };
 
+/// Whether a moving sweep counts a touch at the start of the step whose path leaves the shape: the disc
+/// starts touching it (or in it) and moves away from its surface, so the body puts it exactly where its
+/// own path ends (WorldGeometry::SweepMoving).
+enum class LeavingTouch : std::uint8_t
+{
+    ignored, ///< not a touch: it moves nothing, and a later touch of another body decides
+    counts,  ///< a touch (the body was over the disc at the start of the step)
+};
+
 class WorldGeometry
 {
 public:
@@ -165,18 +174,22 @@ public:
     /// accepts (particles::PathCrossesEdge: a one-sided segment only from its front). A disc pushed out of a
     /// static shape it was deep inside of (one created over it) must not leave through a thin ground.
     bool CrossesStaticSegment(b2Vec2 from, b2Vec2 to, const ParticleSide& side) const;
-    /// Earliest touch with moving fixtures of a disc that was at `start` at the start of the step and
-    /// is at `end` (world). The disc's path is followed in each body's own frame, in pieces short enough
-    /// that a turning body's arc is followed too (at most kMaxTurn of turn a piece), so a spinning wheel
-    /// meets what its rim reaches and not what a chord through it would. After the touch the disc keeps
-    /// the rest of its motion relative to the body, less the part into the surface (it slides along it),
-    /// and ends outside the body where the body is at the end of the step: pushed or carried, never
-    /// left inside. `result`: that end position (world), the surface's normal and velocity there.
-    /// `placedAfter`: the disc was put at `start` after the bodies moved (spawned since the last step, where
-    /// they stand at the end of it): for it the bodies stand still at their end poses. `except`: a body
-    /// not to meet (null: none).
-    bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, bool placedAfter,
-                     SweepResult& result, const b2Body* except = nullptr) const;
+    /// Earliest touch with moving fixtures of a disc that was at `start` at time `from` of the step (0: its
+    /// start, 1: its end; 0..1) and is at `end` (world) at its end. The disc's path is followed in each
+    /// body's own frame, from the body's pose at `from` to its end pose, in pieces short enough that a
+    /// turning body's arc is followed too (at most kMaxTurn of turn a piece), so a spinning wheel meets
+    /// what its rim reaches and not what a chord through it would. After the touch the disc keeps the
+    /// rest of its motion relative to the body, less the part into the surface (it slides along it), and
+    /// ends outside the body where the body is at the end of the step: pushed or carried, never left
+    /// inside. `result`: that end position (world), the surface's normal and velocity there, and the
+    /// touch's fraction of the path (`touch.t`). `from` 1: the disc was put at `start` after the bodies
+    /// moved (spawned since the last step, or pushed from where its flight ended): for it the bodies stand
+    /// still at their end poses. `except`: a body not to meet (null: none). `leaving`: whether a touch at
+    /// the start of the path that leaves the shape (the body puts the disc exactly where its own path
+    /// ends) is a touch; ignored, a touch that moves nothing cannot hide a later one of another body (a
+    /// spark under a box falling onto a rising plank: the plank's, not the box's).
+    bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, float from, SweepResult& result,
+                     const b2Body* except = nullptr, LeavingTouch leaving = LeavingTouch::ignored) const;
 
     /// The most a moving body turns (rad) within one piece of a moving sweep.
     static constexpr float kMaxTurn = 0.1f;
@@ -187,11 +200,11 @@ public:
     /// polygons' cores) exceeds it. A polygon with `point` clearly more than r - depth in front of one of
     /// its edges' lines is passed over without measuring (most pushed particles sit on a surface).
     bool MovingOverlapsDeeper(b2Vec2 point, const ParticleSide& side, float depth) const;
-    /// Whether a moving fixture its filter accepts passes over `point` during the step: it comes within a
-    /// quarter of the disc's radius of it at some time (it covers more than three quarters of a disc at
-    /// rest there). A particle held there (pushed into static geometry) was run over by that body: it went
-    /// through it, not around it.
-    bool MovingPassesOver(b2Vec2 point, const ParticleSide& side) const;
+    /// Whether a moving fixture its filter accepts passes over `point` from time `from` of the step (0..1)
+    /// to its end: it comes within a quarter of the disc's radius of it at some time (it covers more than
+    /// three quarters of a disc at rest there). A particle held there (pushed into static geometry, or
+    /// stopped by a moving body) was run over by that body: it went through it, not around it.
+    bool MovingPassesOver(b2Vec2 point, const ParticleSide& side, float from = 0.0f) const;
 
     /// A box holding all moving geometry (an empty box when there is none): a disc whose path box
     /// misses it meets no moving shape, and SweepMoving would find nothing.
@@ -254,6 +267,8 @@ private:
         /// The body's frame at fraction `f` of the step (f = 0: before, f = 1: after), as Box2D moves
         /// it: the centre of mass along a line, the angle at a constant rate.
         b2Transform At(float f) const;
+        /// Its centre of mass at fraction `f` of the step, as At.
+        b2Vec2 CenterAt(float f) const;
     };
     struct MovingShape
     {
