@@ -96,6 +96,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
           bool spawned, const b2Body* pusher, float from, b2Vec2& position, bool& metMoving)
 {
     b2Vec2 push = target - position;
+    const b2Body* notAWall = pusher; // until a wall turns the push
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
@@ -106,8 +107,7 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         // through where a spark met a box). So does the pusher once a wall turned the push away from
         // where it put the particle (a wheel on the ground: along the ground, not under the wheel).
         SweepResult other;
-        if (geometry.SweepMoving(position, position + push, side, from, other,
-                                 sweep == 0 ? pusher : nullptr) &&
+        if (geometry.SweepMoving(position, position + push, side, from, other, notAWall) &&
             (!metStatic || other.touch.t < wall.touch.t))
         {
             wall.touch.t = other.touch.t;
@@ -126,6 +126,8 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
         const float into = b2Dot(rest, wall.touch.normal);
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
+        // Turned, by more than a rounding (a grain pushed along the ground touches it all the way).
+        notAWall = into < -kTouchSlop ? nullptr : notAWall;
     }
     // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
     if (geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius))

@@ -169,14 +169,22 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             }
             b2Vec2 final = local.position + rest;
             Touch out;
-            if (SweepShape(SweepInput{final, b2Vec2(0.0f, 0.0f), r}, *moving.shape, moving.child, out))
+            const bool endsOn =
+                SweepShape(SweepInput{final, b2Vec2(0.0f, 0.0f), r}, *moving.shape, moving.child, out);
+            // It starts on (or in) the shape and leaves it or slides along it, or it grazes the surface later
+            // and stays on it (a rounding brought it a hair closer): the body moves it nowhere (a grain a
+            // box pushes along the ground, swept again after the ground's touch). Within the touch slop, a
+            // disc is on the surface, not into it.
+            const bool movesNothing = (t == 0.0f ? into >= -kTouchSlop : std::abs(into) <= kTouchSlop) &&
+                                      (!endsOn || out.depth <= kTouchSlop);
+            if (movesNothing && leaving == LeavingTouch::ignored)
+            {
+                return;
+            }
+            if (endsOn)
             {
                 final = out.position;
                 normal = out.normal;
-            }
-            else if (t == 0.0f && into >= 0.0f && leaving == LeavingTouch::ignored)
-            {
-                return; // it starts on (or in) the shape and leaves it: the body moves it nowhere
             }
             result.firstTouch = start + t * (end - start);
             result.touch.t = t;

@@ -14,10 +14,6 @@ namespace cfx::particles
 namespace
 {
 
-// A disc this close inside a surface (m) counts as touching it, not overlapping: a particle resting or
-// sliding at exactly its radius from a surface must not be pushed out (and stopped) by rounding.
-constexpr float kSlop = 1.0e-4f;
-
 bool Earlier(float t, const Touch& best)
 {
     return t < best.t;
@@ -75,7 +71,7 @@ bool SweepCircle(const SweepInput& in, b2Vec2 center, float radius, Touch& best)
     const float grown = radius + in.radius;
     const b2Vec2 m = in.p - center;
     const float mm = b2Dot(m, m);
-    const float touching = grown - kSlop;
+    const float touching = grown - kTouchSlop;
     if (mm < touching * touching)
     {
         const float distance = std::sqrt(mm);
@@ -132,7 +128,7 @@ bool SweepSegment(const SweepInput& in, const Segment& segment, Touch& best)
         return false; // never comes within r of the line
     }
     const b2Vec2 e = segment.v2 - segment.v1;
-    if (s < r - kSlop)
+    if (s < r - kTouchSlop)
     {
         const float u = b2Dot(fromV1, e) * segment.invLengthSq;
         if (u >= 0.0f && u <= 1.0f)
@@ -229,7 +225,7 @@ bool SweepPolygon(const SweepInput& in, const b2Vec2* vertices, const b2Vec2* no
             const float depth = r - maxSeparation;
             return Overlap(in.p + depth * normal, normal, depth, best);
         }
-        if (maxSeparation >= r - kSlop)
+        if (maxSeparation >= r - kTouchSlop)
         {
             // Touching the line of edge maxIndex from outside: the convex polygon lies behind it, so a
             // disc not moving closer to that line stays clear of the whole polygon.

@@ -17,6 +17,10 @@
 namespace cfx::particles
 {
 
+/// A disc this close inside a surface (m) counts as touching it, not overlapping: a particle resting or
+/// sliding at exactly its radius from a surface must not be pushed out (and stopped) by rounding.
+inline constexpr float kTouchSlop = 1.0e-4f;
+
 /// The motion of one disc over one step.
 struct SweepInput
 {
