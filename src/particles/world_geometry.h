@@ -135,9 +135,9 @@ enum class StaticWatch : std::uint8_t
     onRequest, ///< built once; again only after Invalidate (the application says when it changed)
 };
 
-/// Whether a moving sweep counts a touch at the start of the step whose path leaves the shape: the disc
-/// starts touching it (or in it) and moves away from its surface, so the body puts it exactly where its
-/// own path ends (WorldGeometry::SweepMoving).
+/// Whether a moving sweep counts a touch that moves the disc nowhere: it starts touching the shape (or in
+/// it) and leaves it or slides along it, or it grazes the surface later and stays on it (within
+/// kTouchSlop), so the body puts it where its own path ends (WorldGeometry::SweepMoving).
 enum class LeavingTouch : std::uint8_t
 {
     ignored, ///< not a touch: it moves nothing, and a later touch of another body decides
@@ -184,10 +184,9 @@ public:
     /// inside. `result`: that end position (world), the surface's normal and velocity there, and the
     /// touch's fraction of the path (`touch.t`). `from` 1: the disc was put at `start` after the bodies
     /// moved (spawned since the last step, or pushed from where its flight ended): for it the bodies stand
-    /// still at their end poses. `except`: a body not to meet (null: none). `leaving`: whether a touch at
-    /// the start of the path that leaves the shape (the body puts the disc exactly where its own path
-    /// ends) is a touch; ignored, a touch that moves nothing cannot hide a later one of another body (a
-    /// spark under a box falling onto a rising plank: the plank's, not the box's).
+    /// still at their end poses. `except`: a body not to meet (null: none). `leaving`: whether a touch that
+    /// moves the disc nowhere (LeavingTouch) is a touch; ignored, it cannot hide a later one of another body
+    /// (a spark under a box falling onto a rising plank: the plank's, not the box's) nor stop a push.
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, float from, SweepResult& result,
                      const b2Body* except = nullptr, LeavingTouch leaving = LeavingTouch::ignored) const;
 
