@@ -80,45 +80,43 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
     return response;
 }
 
-// A moving body pushes a particle from `position` (outside all static geometry) to `target` (near the
-// body's surface). The push is a motion like any other: it is swept through the static geometry, sliding
-// along what it meets (twice at most, the rest of the push is dropped), so it never carries the particle
-// into or through a static fixture. Returns false when the particle then still overlaps a moving fixture
-// by more than half its radius: squeezed with no free place, it is crushed. So it is when it went through
-// the body: it ends more than half its radius behind `placement` (where the body put it, on its surface,
-// and that surface's normal there, at the end of the step), and a moving body passed over where it ends
-// (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it). A push to
-// `placement` itself that no wall stops ends on it, never behind. `spawned`: the particle was put where it
-// started after the bodies moved (they did not pass over anything of it). `from`: when in the step the push
-// begins (0..1; 1: from where the flight ended). `metMoving`: set when a moving body stopped the push
-// (another one, or the pusher once a wall turned the push).
-bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, const Touch& placement,
-          bool spawned, const b2Body* pusher, float from, b2Vec2& position, bool& metMoving)
+// What a push has met so far.
+struct PushState
+{
+    const b2Body* notAWall; ///< the pusher, until a wall turns the push (then null)
+    bool metMoving = false; ///< a moving body stopped it (another one, or the pusher once a wall turned it)
+};
+
+// A moving body pushes a particle from `position` (outside all static geometry) towards `target` (near the
+// body's surface), from time `from` of the step (0..1; 1: from where the flight ended). The push is a
+// motion like any other: it is swept through the static geometry, sliding along what it meets (twice at
+// most, the rest of the push is dropped), so it never carries the particle into or through a static
+// fixture. Another moving body stops it as a wall does, met as it moves over the rest of the step: a push
+// goes through no body (a box pushing a spark into the plank it lands on, a plank rising through where a
+// spark met a box). So does the pusher once a wall turned the push away from where it put the particle (a
+// wheel on the ground: along the ground, not under the wheel). Returns whether it got to `target`.
+bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, float from,
+                PushState& state, b2Vec2& position)
 {
     b2Vec2 push = target - position;
-    const b2Body* notAWall = pusher; // until a wall turns the push
     for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
         const bool metStatic =
             geometry.HasStatic() && geometry.SweepStatic(SweepInput{position, push, side.radius}, side, wall);
-        // Another moving body stops the push as a wall does, met as it moves over the rest of the step: a
-        // push goes through no body (a box pushing a spark into the plank it lands on, a plank rising
-        // through where a spark met a box). So does the pusher once a wall turned the push away from
-        // where it put the particle (a wheel on the ground: along the ground, not under the wheel).
         SweepResult other;
-        if (geometry.SweepMoving(position, position + push, side, from, other, notAWall) &&
+        if (geometry.SweepMoving(position, position + push, side, from, other, state.notAWall) &&
             (!metStatic || other.touch.t < wall.touch.t))
         {
             wall.touch.t = other.touch.t;
             wall.touch.position = other.firstTouch;
             wall.touch.normal = other.touch.normal;
-            metMoving = true;
+            state.metMoving = true;
         }
         else if (!metStatic)
         {
             position += push;
-            break;
+            return sweep == 0;
         }
         position = wall.touch.position;
         from += wall.touch.t * (1.0f - from);
@@ -127,8 +125,21 @@ bool Push(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target
         const float into = b2Dot(rest, wall.touch.normal);
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
         // Turned, by more than a rounding (a grain pushed along the ground touches it all the way).
-        notAWall = into < -kTouchSlop ? nullptr : notAWall;
+        state.notAWall = into < -kTouchSlop ? nullptr : state.notAWall;
     }
+    return false;
+}
+
+// Whether a pushed particle at `position` has a free place there. Not when it still overlaps a moving
+// fixture by more than half its radius: squeezed with no free place, it is crushed. Nor when it went
+// through the body: it ends more than half its radius behind `placement` (where the body put it, on its
+// surface, and that surface's normal there, at the end of the step), and a moving body passed over where it
+// ends (a thin plate rising fast into a ceiling leaves the particle held under the ceiling below it). A
+// push to `placement` itself that no wall stops ends on it, never behind. `spawned`: the particle was put
+// where it started after the bodies moved (they did not pass over anything of it).
+bool PushedFree(const WorldGeometry& geometry, const ParticleSide& side, const Touch& placement, bool spawned,
+                b2Vec2 position)
+{
     // Pushed out of one body, it may now be in another (a pile), or still in this one (a wedge).
     if (geometry.MovingOverlapsDeeper(position, side, 0.5f * side.radius))
     {
@@ -321,15 +332,31 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 {
                     break; // crushed: the flight's end is beyond another moving body
                 }
-                bool metMoving = false;
                 position = attempt.from;
                 if (pushedFrom != nullptr)
                 {
                     *pushedFrom = PushedFrom{free, k == 0 ? hit.touch.t : 1.0f, true};
                 }
-                crushed = !Push(geometry, type.side, attempt.to, hit.touch, spawned, pusher, attempt.time,
-                                position, metMoving) ||
-                          (metMoving && geometry.MovingPassesOver(position, type.side, attempt.time));
+                // The push from the touch follows the particle's way with the body: an arc, in pieces, when
+                // the body turns (a roller carries it around its rim, not along a chord through the next).
+                PushState state{pusher};
+                const int pieces = k == 0 ? geometry.CarryPieces(hit) : 1;
+                float pieceFrom = attempt.time;
+                for (int piece = 1; piece <= pieces; ++piece)
+                {
+                    const float f = piece == pieces
+                                        ? 1.0f
+                                        : attempt.time + (1.0f - attempt.time) * static_cast<float>(piece) /
+                                                             static_cast<float>(pieces);
+                    const b2Vec2 waypoint = piece == pieces ? attempt.to : geometry.Carried(hit, f);
+                    if (!PushToward(geometry, type.side, waypoint, pieceFrom, state, position))
+                    {
+                        break; // stopped: the rest of the way is not the body's to give
+                    }
+                    pieceFrom = f;
+                }
+                crushed = !PushedFree(geometry, type.side, hit.touch, spawned, position) ||
+                          (state.metMoving && geometry.MovingPassesOver(position, type.side, attempt.time));
                 if (!crushed)
                 {
                     break;

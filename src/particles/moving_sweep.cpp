@@ -187,6 +187,10 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                 normal = out.normal;
             }
             result.firstTouch = start + t * (end - start);
+            result.movingBody = moving.body;
+            result.touchTime = from + t * left;
+            result.carryFrom = local.position;
+            result.carryTo = final;
             result.touch.t = t;
             result.touch.depth = local.depth;
             result.touch.position = b2Mul(body.after, final);
@@ -197,6 +201,23 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             found = true;
         });
     return found;
+}
+
+b2Vec2 WorldGeometry::Carried(const SweepResult& hit, float f) const
+{
+    const MovingBody& body = m_movingBodies[hit.movingBody];
+    const float left = 1.0f - hit.touchTime;
+    const float along = left > 0.0f ? (f - hit.touchTime) / left : 1.0f;
+    return b2Mul(body.At(f), hit.carryFrom + along * (hit.carryTo - hit.carryFrom));
+}
+
+int WorldGeometry::CarryPieces(const SweepResult& hit) const
+{
+    const float left = 1.0f - hit.touchTime;
+    const int pieces = m_movingBodies[hit.movingBody].pieces;
+    return left > 0.0f && pieces > 1
+               ? std::max(1, static_cast<int>(std::ceil(left * static_cast<float>(pieces))))
+               : 1;
 }
 
 bool WorldGeometry::MovingPassesOver(b2Vec2 point, const ParticleSide& side, float from) const

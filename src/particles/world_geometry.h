@@ -82,6 +82,13 @@ struct SweepResult
     const SurfaceMaterial* material = nullptr; ///< valid until the next Scan
     /// Moving sweeps only: where (world) the disc was when it first touched the body.
     b2Vec2 firstTouch{0.0f, 0.0f};
+    /// Moving sweeps only: the body met (an index into the step's moving bodies), when in the step (0..1),
+    /// and the disc's way with it from then on, in its frame: from `carryFrom` at the touch to `carryTo`
+    /// (where `touch.position` is) at the end of the step (WorldGeometry::Carried).
+    std::uint32_t movingBody = 0;
+    float touchTime = 1.0f;
+    b2Vec2 carryFrom{0.0f, 0.0f};
+    b2Vec2 carryTo{0.0f, 0.0f};
 };
 
 /// The box a disc of radius `radius` covers moving from `start` to `end`.
@@ -189,6 +196,13 @@ public:
     /// (a spark under a box falling onto a rising plank: the plank's, not the box's) nor stop a push.
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, float from, SweepResult& result,
                      const b2Body* except = nullptr, LeavingTouch leaving = LeavingTouch::ignored) const;
+
+    /// Where (world) a disc a moving sweep's `hit` touched is at time `f` of the step (hit.touchTime .. 1)
+    /// as the body carries it: along its way in the body's frame, at the body's pose then. A straight line
+    /// for a body that does not turn; an arc for one that does.
+    b2Vec2 Carried(const SweepResult& hit, float f) const;
+    /// In how many pieces to follow a disc the body of `hit` carries, each turning at most kMaxTurn.
+    int CarryPieces(const SweepResult& hit) const;
 
     /// The most a moving body turns (rad) within one piece of a moving sweep.
     static constexpr float kMaxTurn = 0.1f;

@@ -26,7 +26,7 @@ struct Reference
 
 constexpr Reference kReferences[] = {
     {"tutorial", "384f9742851624f7"},
-    {"rockslide", "67972ff1096a5b83"},
+    {"rockslide", "f600be24a7814313"},
 };
 
 std::string RunHash(std::string_view name, unsigned threads)
