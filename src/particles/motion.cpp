@@ -218,7 +218,7 @@ b2Vec2 Bounce(const SweepResult& hit, b2Vec2 velocity, float touchSpeed, const T
 // its mark says; `mark`: that mark, what is left of its clearance after this step's flight. Returns its
 // clearance after the step (see PoolArrays): kResting at a fixed point of the static sweep,
 // kUnknownClearance after a touch. `crushed`: set when a moving body squeezed it against other geometry
-// with no free place (see Push), or when the static sweeps leave it more than half its radius inside a
+// with no free place (see PushedFree), or when the static sweeps leave it more than half its radius inside a
 // static shape (it started in two at once). `hardest`: its hardest touch of the step. `pushedFrom` (null
 // unless the particle check is on): set when a moving body pushed it, to where its flight ended (after the
 // static sweeps) and where along the flight the push began; left as it was when nothing pushed it. A
