@@ -319,7 +319,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 float time; // when in the step the push begins (0..1)
                 b2Vec2 to;
             };
-            const Attempt attempts[] = {{hit.firstTouch, spawned ? 1.0f : hit.touch.t, hit.touch.position},
+            const Attempt attempts[] = {{hit.firstTouch, hit.touchTime, hit.touch.position},
                                         {free, 1.0f, hit.touch.position},
                                         {free, 1.0f, hit.firstTouch}};
             const b2Body* pusher = hit.material->body;

@@ -53,6 +53,14 @@ b2Vec2 WorldGeometry::MovingBody::CenterAt(float f) const
     return f >= 1.0f ? center : f <= 0.0f ? centerBefore : centerBefore + f * (center - centerBefore);
 }
 
+int WorldGeometry::MovingBody::PiecesFrom(float from) const
+{
+    const float left = 1.0f - from;
+    return from <= 0.0f  ? pieces
+           : left > 0.0f ? std::max(1, static_cast<int>(std::ceil(left * static_cast<float>(pieces))))
+                         : 1;
+}
+
 b2Transform WorldGeometry::MovingBody::At(float f) const
 {
     if (f >= 1.0f)
@@ -92,7 +100,6 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
     const float r = side.radius;
     const b2AABB query = PathBox(start, end, r);
     const float left = 1.0f - from; // of the step, from `from`
-    const bool wholeStep = from <= 0.0f;
     bool found = false;
     m_movingGrid.Query(
         query,
@@ -109,8 +116,7 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
                 return;
             }
             const MovingBody& body = m_movingBodies[moving.body];
-            if (!MayMeet(body, wholeStep ? body.centerBefore : body.CenterAt(from), moving.reach, start, end,
-                         r))
+            if (!MayMeet(body, body.CenterAt(from), moving.reach, start, end, r))
             {
                 return;
             }
@@ -118,11 +124,7 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
             // The disc's path in the body's frame, piece by piece: from where it was in the frame at the
             // piece's start to where it is in the frame at the piece's end (one piece, in the end pose,
             // from the end of the step). A piece is a fraction `perPiece` of the path and of the time left.
-            const int pieces =
-                wholeStep ? body.pieces
-                : left > 0.0f
-                    ? std::max(1, static_cast<int>(std::ceil(left * static_cast<float>(body.pieces))))
-                    : 1;
+            const int pieces = body.PiecesFrom(from);
             const float perPiece = 1.0f / static_cast<float>(pieces);
             b2Transform frame = body.At(from);
             b2Vec2 pieceStart = b2MulT(frame, start);
@@ -213,11 +215,7 @@ b2Vec2 WorldGeometry::Carried(const SweepResult& hit, float f) const
 
 int WorldGeometry::CarryPieces(const SweepResult& hit) const
 {
-    const float left = 1.0f - hit.touchTime;
-    const int pieces = m_movingBodies[hit.movingBody].pieces;
-    return left > 0.0f && pieces > 1
-               ? std::max(1, static_cast<int>(std::ceil(left * static_cast<float>(pieces))))
-               : 1;
+    return m_movingBodies[hit.movingBody].PiecesFrom(hit.touchTime);
 }
 
 bool WorldGeometry::MovingPassesOver(b2Vec2 point, const ParticleSide& side, float from) const

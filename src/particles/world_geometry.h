@@ -282,6 +282,9 @@ private:
         b2Transform At(float f) const;
         /// Its centre of mass at fraction `f` of the step, as At.
         b2Vec2 CenterAt(float f) const;
+        /// In how many pieces to follow it from fraction `from` of the step to its end, each turning at most
+        /// kMaxTurn (`pieces` from the start, 1 from the end).
+        int PiecesFrom(float from) const;
     };
     struct MovingShape
     {
