@@ -30,6 +30,10 @@ namespace
 {
 
 constexpr int kStaticSweeps = 2;
+// A push's: a push along the ground may first meet where two of its pieces join (on a finely split ground
+// a push of a few centimetres starts on a joint: the corner tilts it by a rounding, then the surface takes
+// that tilt off), and still has its way along the ground to go.
+constexpr int kPushSweeps = 4;
 
 // Particles per block: pass 2's list lives on the stack.
 constexpr std::uint32_t kBlock = 64;
@@ -83,23 +87,26 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 // What a push has met so far.
 struct PushState
 {
-    const b2Body* notAWall; ///< the pusher, until a wall turns the push (then null)
+    const b2Body* notAWall; ///< the pusher, until a wall turns the push into it (then null)
+    b2Vec2 pusherNormal;    ///< the pusher's surface normal where it puts the particle (world)
     bool metMoving = false; ///< a moving body stopped it (another one, or the pusher once a wall turned it)
 };
 
 // A moving body pushes a particle from `position` (outside all static geometry) towards `target` (near the
 // body's surface), from time `from` of the step (0..1; 1: from where the flight ended). The push is a
-// motion like any other: it is swept through the static geometry, sliding along what it meets (twice at
-// most, the rest of the push is dropped), so it never carries the particle into or through a static
-// fixture. Another moving body stops it as a wall does, met as it moves over the rest of the step: a push
-// goes through no body (a box pushing a spark into the plank it lands on, a plank rising through where a
-// spark met a box). So does the pusher once a wall turned the push away from where it put the particle (a
-// wheel on the ground: along the ground, not under the wheel). Returns whether it got to `target`.
+// motion like any other: it is swept through the static geometry, sliding along what it meets (up to
+// kPushSweeps times, the rest of the push is dropped), so it never carries the particle into or through a
+// static fixture. Another moving body stops it as a wall does, met as it moves over the rest of the step: a
+// push goes through no body (a box pushing a spark into the plank it lands on, a plank rising through where a
+// spark met a box). So does the pusher once a wall turned the push into its surface (a wheel on the ground:
+// along the ground, not under the wheel); a push turned away from it (a box the ground's joints tilt pushes
+// a ball forward and a little down: along the ground ahead of it) is still the pusher's. Returns whether it
+// got to `target`.
 bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, float from,
                 PushState& state, b2Vec2& position)
 {
     b2Vec2 push = target - position;
-    for (int sweep = 0; sweep < kStaticSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
+    for (int sweep = 0; sweep < kPushSweeps && (push.x != 0.0f || push.y != 0.0f); ++sweep)
     {
         SweepResult wall;
         const bool metStatic =
@@ -124,8 +131,10 @@ bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
         const float into = b2Dot(rest, wall.touch.normal);
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
-        // Turned, by more than a rounding (a grain pushed along the ground touches it all the way).
-        state.notAWall = into < -kTouchSlop ? nullptr : state.notAWall;
+        // Turned by more than a rounding (a grain pushed along the ground touches it all the way), into the
+        // pusher's surface.
+        const bool intoPusher = into < -kTouchSlop && b2Dot(push, state.pusherNormal) < -kTouchSlop;
+        state.notAWall = intoPusher ? nullptr : state.notAWall;
     }
     return false;
 }
@@ -339,7 +348,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 }
                 // The push from the touch follows the particle's way with the body: an arc, in pieces, when
                 // the body turns (a roller carries it around its rim, not along a chord through the next).
-                PushState state{pusher};
+                PushState state{pusher, hit.touch.normal};
                 const int pieces = k == 0 ? geometry.CarryPieces(hit) : 1;
                 float pieceFrom = attempt.time;
                 for (int piece = 1; piece <= pieces; ++piece)

@@ -486,9 +486,19 @@ TEST(MovingBodiesSliding, GrainsSlidingIntoAWheelOnTheGroundStopInFrontOfIt)
 // ground ahead). A box's touch pushes them along the ground; the ground's touch turned that push by a
 // rounding, after which the box itself stopped it as a wall and then ran over them. A touch whose path
 // only slides along the body is no touch: none is crushed, on any ground, at 30 to 240 Hz.
+//
+// On a finely split ground (2 cm pieces) two more ways crushed balls the boxes never ran over: a push along
+// the ground that starts on a joint meets the joint's corner (turned by a rounding) and then the surface
+// (which takes that turn off), and had no sweep left for its way (1 or 2 of 40 on the 2 cm chain); and a
+// box tilted by the joints (0.07 rad) pushes the balls forward and a little down, the ground turns that
+// along itself, and the box then stopped them as a wall (3 of 40 at 30 Hz and 1 m/s). A push may now slide
+// four times, and the pusher is a wall only when the turned push heads into its surface (under a wheel).
+// Box2D's boxes trip on the joints of a 2 cm ground at 5 m/s (up to 60 Hz) and hop up to 20 cm: balls roll
+// under them and are crushed when they land. Wherever the boxes stay lower than a ball's diameter, none is.
 TEST(MovingBodiesSliding, BallsShovedAlongTheGroundByABoxAreNotCrushed)
 {
-    for (const Ground ground : {Ground::twoSidedEdge, Ground::chain, Ground::thickBox, Ground::splitBoxes})
+    for (const Ground ground : {Ground::twoSidedEdge, Ground::chain, Ground::thickBox, Ground::splitBoxes,
+                                Ground::fineChain, Ground::fineBoxes})
     {
         for (const int hz : {30, 60, 120, 240})
         {
@@ -502,8 +512,9 @@ TEST(MovingBodiesSliding, BallsShovedAlongTheGroundByABoxAreNotCrushed)
                 Pool scene({Ball(0.0f, 0.5f)}, ParticleBudget{64, RecyclePolicy::oldest}, options);
                 CreateGround(*scene.world, ground, 0.5f);
                 b2Body* pusher = scene.CreateBox(b2Vec2(-1.0f, 0.5f), 0.5f, 0.5f, 0.5f, b2_kinematicBody);
-                scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f);
-                scene.CreateBox(b2Vec2(1.0f, 0.5f), 0.5f, 0.5f, 0.5f);
+                const b2Body* shoved[] = {scene.CreateBox(b2Vec2(0.0f, 0.5f), 0.5f, 0.5f, 0.5f),
+                                          scene.CreateBox(b2Vec2(1.0f, 0.5f), 0.5f, 0.5f, 0.5f)};
+                float mostLifted = 0.0f; // the boxes' centres above where they stand (m)
                 for (int i = 0; i < 40; ++i)
                 {
                     scene.Add(b2Vec2(1.6f + 0.05f * static_cast<float>(i), 0.05f)); // on the ground ahead
@@ -513,9 +524,18 @@ TEST(MovingBodiesSliding, BallsShovedAlongTheGroundByABoxAreNotCrushed)
                     pusher->SetLinearVelocity(b2Vec2(step < hz / 4 ? 0.0f : speed, 0.0f));
                     scene.world->Step(dt, 8, 3);
                     scene.system->Step(dt, scene.world->GetGravity());
+                    for (const b2Body* box : shoved)
+                    {
+                        mostLifted = std::max(mostLifted, box->GetPosition().y - 0.5f);
+                    }
                 }
                 const ParticleCounters& counters = scene.system->Counters();
-                EXPECT_EQ(counters.crushed, 0u);
+                const bool hopped = mostLifted > 2.0f * scene.types[0].radius;
+                EXPECT_EQ(hopped, ground == Ground::fineBoxes && speed > 1.0f && hz <= 60) << mostLifted;
+                if (!hopped)
+                {
+                    EXPECT_EQ(counters.crushed, 0u);
+                }
                 EXPECT_EQ(counters.passedThroughMoving, 0u);
                 EXPECT_EQ(counters.stepsInside, 0u);
                 EXPECT_EQ(counters.crossings, 0u);
@@ -691,7 +711,8 @@ TEST(MovingBodiesCheck, AParticlePushedDownPastAnEdgesEndIsNoCrossing)
 
 INSTANTIATE_TEST_SUITE_P(Particles, MovingBodies,
                          ::testing::Combine(::testing::Values(Ground::twoSidedEdge, Ground::chain,
-                                                              Ground::thickBox, Ground::splitBoxes),
+                                                              Ground::thickBox, Ground::splitBoxes,
+                                                              Ground::fineChain, Ground::fineBoxes),
                                             ::testing::Values(30, 60, 120, 240)),
                          CaseName);
 

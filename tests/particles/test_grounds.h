@@ -1,5 +1,6 @@
 // Static grounds of every shape type for the pool particle tests: a two-sided edge, a one-sided chain, a
-// thick box and a row of split boxes, all with their top at y = 0 in the ground body's frame.
+// thick box and a row of split boxes, and finely split versions of the last two (2 cm pieces, smaller than a
+// wheel's push in a step), all with their top at y = 0 in the ground body's frame.
 #pragma once
 
 #include <box2d/box2d.h>
@@ -14,6 +15,8 @@ enum class Ground
     chain,      // one-sided, 0.5 m segments, solid from above
     thickBox,   // 1 m thick
     splitBoxes, // 0.25 m wide polygons side by side
+    fineChain,  // one-sided, 2 cm segments
+    fineBoxes,  // 2 cm wide polygons side by side
 };
 
 inline const char* GroundName(Ground ground)
@@ -28,6 +31,10 @@ inline const char* GroundName(Ground ground)
         return "Box";
     case Ground::splitBoxes:
         return "SplitBoxes";
+    case Ground::fineChain:
+        return "FineChain";
+    case Ground::fineBoxes:
+        return "FineBoxes";
     }
     return "";
 }
@@ -56,11 +63,15 @@ inline std::vector<b2Fixture*> CreateGround(b2World& world, Ground ground, float
         break;
     }
     case Ground::chain:
+    case Ground::fineChain:
     {
+        // Right to left: the normal points up. Counted in integers, so that the last vertex is at the end.
+        const int segments = ground == Ground::chain ? 120 : 3000;
         std::vector<b2Vec2> vertices;
-        for (float x = kHalfWidth; x >= -kHalfWidth; x -= 0.5f) // right to left: the normal points up
+        for (int i = 0; i <= segments; ++i)
         {
-            vertices.emplace_back(x, 0.0f);
+            vertices.emplace_back(
+                kHalfWidth - 2.0f * kHalfWidth * static_cast<float>(i) / static_cast<float>(segments), 0.0f);
         }
         b2ChainShape chain;
         chain.CreateChain(vertices.data(), static_cast<int>(vertices.size()), vertices.front() + b2Vec2(1, 0),
@@ -78,11 +89,15 @@ inline std::vector<b2Fixture*> CreateGround(b2World& world, Ground ground, float
         break;
     }
     case Ground::splitBoxes:
+    case Ground::fineBoxes:
     {
-        for (float x = -kHalfWidth; x < kHalfWidth; x += 0.25f)
+        const int boxes = ground == Ground::splitBoxes ? 240 : 3000;
+        const float halfBox = kHalfWidth / static_cast<float>(boxes);
+        for (int i = 0; i < boxes; ++i)
         {
             b2PolygonShape box;
-            box.SetAsBox(0.125f, 0.5f, b2Vec2(x + 0.125f, -0.5f), 0.0f);
+            box.SetAsBox(halfBox, 0.5f, b2Vec2(-kHalfWidth + halfBox * static_cast<float>(2 * i + 1), -0.5f),
+                         0.0f);
             fixture.shape = &box;
             fixtures.push_back(body->CreateFixture(&fixture));
         }
