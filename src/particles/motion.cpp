@@ -88,7 +88,13 @@ SurfaceResponse Mix(const ParticleSide& side, const SurfaceMaterial& material, b
 struct PushState
 {
     const b2Body* notAWall; ///< the pusher, until a wall turns the push into it (then null)
-    b2Vec2 pusherNormal;    ///< the pusher's surface normal where it puts the particle (world)
+    /// The pusher's surface normal (world) where the current piece of the push ends, on the particle's way
+    /// with the body (`alongTheBody`); unused otherwise.
+    b2Vec2 pusherNormal;
+    /// The push follows the particle's way with the body, on its surface: a wall turning it away from that
+    /// surface leaves the pusher no wall. Otherwise (a straight push from where the flight ended, which may
+    /// cut through the pusher) any turn makes it one.
+    bool alongTheBody;
     bool metMoving = false; ///< a moving body stopped it (another one, or the pusher once a wall turned it)
 };
 
@@ -98,10 +104,10 @@ struct PushState
 // kPushSweeps times, the rest of the push is dropped), so it never carries the particle into or through a
 // static fixture. Another moving body stops it as a wall does, met as it moves over the rest of the step: a
 // push goes through no body (a box pushing a spark into the plank it lands on, a plank rising through where a
-// spark met a box). So does the pusher once a wall turned the push into its surface (a wheel on the ground:
-// along the ground, not under the wheel); a push turned away from it (a box the ground's joints tilt pushes
-// a ball forward and a little down: along the ground ahead of it) is still the pusher's. Returns whether it
-// got to `target`.
+// spark met a box). So does the pusher once a wall turned the push (a wheel on the ground: along the ground,
+// not under the wheel); a push along the particle's way with the body that the wall turns away from its
+// surface (a box the ground's joints tilt pushes a ball forward and a little down: along the ground ahead of
+// it) is still the pusher's (PushState::alongTheBody). Returns whether it got to `target`.
 bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, float from,
                 PushState& state, b2Vec2& position)
 {
@@ -131,9 +137,10 @@ bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
         const float into = b2Dot(rest, wall.touch.normal);
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
-        // Turned by more than a rounding (a grain pushed along the ground touches it all the way), into the
-        // pusher's surface.
-        const bool intoPusher = into < -kTouchSlop && b2Dot(push, state.pusherNormal) < -kTouchSlop;
+        // Turned by more than a rounding (a grain pushed along the ground touches it all the way), and into
+        // the pusher's surface if the push follows the particle's way with it.
+        const bool intoPusher =
+            into < -kTouchSlop && (!state.alongTheBody || b2Dot(push, state.pusherNormal) < -kTouchSlop);
         state.notAWall = intoPusher ? nullptr : state.notAWall;
     }
     return false;
@@ -348,7 +355,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 }
                 // The push from the touch follows the particle's way with the body: an arc, in pieces, when
                 // the body turns (a roller carries it around its rim, not along a chord through the next).
-                PushState state{pusher, hit.touch.normal};
+                PushState state{pusher, hit.touch.normal, k == 0};
                 const int pieces = k == 0 ? geometry.CarryPieces(hit) : 1;
                 float pieceFrom = attempt.time;
                 for (int piece = 1; piece <= pieces; ++piece)
@@ -357,8 +364,12 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                                         ? 1.0f
                                         : attempt.time + (1.0f - attempt.time) * static_cast<float>(piece) /
                                                              static_cast<float>(pieces);
-                    const b2Vec2 waypoint = piece == pieces ? attempt.to : geometry.Carried(hit, f);
-                    if (!PushToward(geometry, type.side, waypoint, pieceFrom, state, position))
+                    const WorldGeometry::CarriedDisc waypoint =
+                        piece == pieces ? WorldGeometry::CarriedDisc{attempt.to, hit.touch.normal}
+                                        : geometry.Carried(hit, f);
+                    // The pusher's surface where this piece ends: a wheel turning 2 rad a step turns it too.
+                    state.pusherNormal = waypoint.normal;
+                    if (!PushToward(geometry, type.side, waypoint.position, pieceFrom, state, position))
                     {
                         break; // stopped: the rest of the way is not the body's to give
                     }

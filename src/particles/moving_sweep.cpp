@@ -205,12 +205,14 @@ bool WorldGeometry::SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& si
     return found;
 }
 
-b2Vec2 WorldGeometry::Carried(const SweepResult& hit, float f) const
+WorldGeometry::CarriedDisc WorldGeometry::Carried(const SweepResult& hit, float f) const
 {
     const MovingBody& body = m_movingBodies[hit.movingBody];
     const float left = 1.0f - hit.touchTime;
     const float along = left > 0.0f ? (f - hit.touchTime) / left : 1.0f;
-    return b2Mul(body.At(f), hit.carryFrom + along * (hit.carryTo - hit.carryFrom));
+    const b2Transform frame = body.At(f);
+    return CarriedDisc{b2Mul(frame, hit.carryFrom + along * (hit.carryTo - hit.carryFrom)),
+                       b2Mul(frame.q, b2MulT(body.after.q, hit.touch.normal))};
 }
 
 int WorldGeometry::CarryPieces(const SweepResult& hit) const

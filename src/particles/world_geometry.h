@@ -197,10 +197,16 @@ public:
     bool SweepMoving(b2Vec2 start, b2Vec2 end, const ParticleSide& side, float from, SweepResult& result,
                      const b2Body* except = nullptr, LeavingTouch leaving = LeavingTouch::ignored) const;
 
-    /// Where (world) a disc a moving sweep's `hit` touched is at time `f` of the step (hit.touchTime .. 1)
-    /// as the body carries it: along its way in the body's frame, at the body's pose then. A straight line
-    /// for a body that does not turn; an arc for one that does.
-    b2Vec2 Carried(const SweepResult& hit, float f) const;
+    /// A disc a moving body carries, at some time of the step (world).
+    struct CarriedDisc
+    {
+        b2Vec2 position;
+        b2Vec2 normal; ///< the body's surface normal where it puts the disc, turned with the body to then
+    };
+    /// Where a disc a moving sweep's `hit` touched is at time `f` of the step (hit.touchTime .. 1) as the
+    /// body carries it: along its way in the body's frame, at the body's pose then. A straight line for a
+    /// body that does not turn; an arc for one that does.
+    CarriedDisc Carried(const SweepResult& hit, float f) const;
     /// In how many pieces to follow a disc the body of `hit` carries, each turning at most kMaxTurn.
     int CarryPieces(const SweepResult& hit) const;
 
