@@ -251,8 +251,10 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
     float clearance = kUnknownClearance;
     bool fixedPoint = false;
     bool touched = false;
-    // A static touch bent its path: anything but a slide from the start (a particle on the ground).
+    // A static touch bent its path: anything but a slide from the start (a particle on the ground); and the
+    // squared distance from the start to where it first bent (the path is straight up to there).
     bool bent = false;
+    float bendReach2 = 0.0f;
     if (part == StaticPart::resting)
     {
         velocity.SetZero();
@@ -283,7 +285,9 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 break;
             }
             staticReach2 = touched ? staticReach2 : b2DistanceSquared(hit.touch.position, start);
-            bent = bent || sweep > 0 || hit.touch.t > 0.0f;
+            const bool bends = sweep > 0 || hit.touch.t > 0.0f;
+            bendReach2 = !bent && bends ? b2DistanceSquared(hit.touch.position, start) : bendReach2;
+            bent = bent || bends;
             touched = true;
             startedDeep = startedDeep || (hit.touch.t == 0.0f && hit.touch.depth > 0.5f * type.side.radius);
             position = hit.touch.position;
@@ -321,14 +325,17 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             // body: from the touch on the particle went with the body, so the rest of its flight (through
             // another moving body, say) never happened. That point is on the chord from the start to where
             // the static sweeps left the particle: on its path (a slide along the ground too), unless a
-            // static touch bent the path. When that push leaves it squeezed, from where the flight ended
-            // (outside the static geometry: a particle flown past an edge's end and pushed down beyond it
-            // goes around the end), if the flight met no other moving body after the touch; failing that
-            // too (a wedge), back to where it met the body. Stopped by a moving body on the way (another,
-            // or the pusher after a wall turned the push), it was squeezed: when a moving body went on over
-            // where it was left (a plank turning through a spark a box had pushed against it, a box sliding
-            // over a spark in the gap under it), it went through it.
+            // static touch bent the path before it (a ball sliding down a slope into a wheel's gap: the
+            // flight ends beyond the wheel, the touch is at its start). When that push leaves it squeezed,
+            // from where the flight ended (outside the static geometry: a particle flown past an edge's end
+            // and pushed down beyond it goes around the end), if the flight met no other moving body after
+            // the touch; failing that too (a wedge), back to where it met the body. Stopped by a moving body
+            // on the way (another, or the pusher after a wall turned the push), it was squeezed: when a
+            // moving body went on over where it was left (a plank turning through a spark a box had pushed
+            // against it, a box sliding over a spark in the gap under it), it went through it.
             const b2Vec2 free = position;
+            const bool bentBefore =
+                bent && hit.touch.t * hit.touch.t * b2DistanceSquared(free, start) >= bendReach2;
             struct Attempt
             {
                 b2Vec2 from;
@@ -339,14 +346,21 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                                         {free, 1.0f, hit.touch.position},
                                         {free, 1.0f, hit.firstTouch}};
             const b2Body* pusher = hit.material->body;
-            for (int k = bent ? 1 : 0; k < 3; ++k)
+            for (int k = bentBefore ? 1 : 0; k < 3; ++k)
             {
                 const Attempt& attempt = attempts[k];
                 SweepResult other;
-                if (k == 1 && !bent &&
+                if (k == 1 && !bentBefore &&
                     geometry.SweepMoving(hit.firstTouch, free, type.side, attempts[0].time, other, pusher))
                 {
                     break; // crushed: the flight's end is beyond another moving body
+                }
+                if (k == 1 && !bentBefore &&
+                    b2DistanceSquared(free, hit.firstTouch) <= kTouchSlop * kTouchSlop)
+                {
+                    // No flight after the touch: the same push again, but along a chord instead of the way
+                    // with the body; across a turning wheel's rim, in a wedge it stopped in, under the wheel.
+                    continue;
                 }
                 position = attempt.from;
                 if (pushedFrom != nullptr)
@@ -355,8 +369,8 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                 }
                 // The push from the touch follows the particle's way with the body: an arc, in pieces, when
                 // the body turns (a roller carries it around its rim, not along a chord through the next).
-                PushState state{pusher, hit.touch.normal, k == 0};
                 const int pieces = k == 0 ? geometry.CarryPieces(hit) : 1;
+                PushState state{pusher, hit.touch.normal, k == 0};
                 float pieceFrom = attempt.time;
                 for (int piece = 1; piece <= pieces; ++piece)
                 {
