@@ -131,12 +131,17 @@ bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 
             position += push;
             return sweep == 0;
         }
+        const bool moved = !SameBits(wall.touch.position, position);
         position = wall.touch.position;
         from += wall.touch.t * (1.0f - from);
         // Slide: what is left of the push, less its part into the wall.
         const b2Vec2 rest = (1.0f - wall.touch.t) * push;
         const float into = b2Dot(rest, wall.touch.normal);
         push = into < 0.0f ? rest - into * wall.touch.normal : rest;
+        if (!moved && wall.touch.t == 0.0f && into >= 0.0f)
+        {
+            break; // nothing changed: every sweep left would meet the same touch (a particle wedged in place)
+        }
         // Turned by more than a rounding (a grain pushed along the ground touches it all the way), and into
         // the pusher's surface if the push follows the particle's way with it.
         const bool intoPusher =
