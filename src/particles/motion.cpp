@@ -355,17 +355,20 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
             {
                 const Attempt& attempt = attempts[k];
                 SweepResult other;
-                if (k == 1 && !bentBefore &&
-                    geometry.SweepMoving(hit.firstTouch, free, type.side, attempts[0].time, other, pusher))
+                if (k == 1 && !bentBefore)
                 {
-                    break; // crushed: the flight's end is beyond another moving body
-                }
-                if (k == 1 && !bentBefore &&
-                    b2DistanceSquared(free, hit.firstTouch) <= kTouchSlop * kTouchSlop)
-                {
-                    // No flight after the touch: the same push again, but along a chord instead of the way
-                    // with the body; across a turning wheel's rim, in a wedge it stopped in, under the wheel.
-                    continue;
+                    if (geometry.SweepMoving(hit.firstTouch, free, type.side, attempts[0].time, other,
+                                             pusher))
+                    {
+                        break; // crushed: the flight's end is beyond another moving body
+                    }
+                    if (b2DistanceSquared(free, hit.firstTouch) <= kTouchSlop * kTouchSlop)
+                    {
+                        // No flight after the touch: the same push again, but along a chord instead of the
+                        // way with the body; across a turning wheel's rim, from a wedge it stopped in, under
+                        // the wheel.
+                        continue;
+                    }
                 }
                 position = attempt.from;
                 if (pushedFrom != nullptr)
