@@ -107,7 +107,9 @@ struct PushState
 // spark met a box). So does the pusher once a wall turned the push (a wheel on the ground: along the ground,
 // not under the wheel); a push along the particle's way with the body that the wall turns away from its
 // surface (a box the ground's joints tilt pushes a ball forward and a little down: along the ground ahead of
-// it) is still the pusher's (PushState::alongTheBody). Returns whether it got to `target`.
+// it) is still the pusher's (PushState::alongTheBody). Returns whether the push got through: to `target`,
+// or sliding along what it met (a ball the wheel carries along the ground), so that the next piece of the
+// way goes on from there; false when it ran out of sweeps (wedged) with push left.
 bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 target, float from,
                 PushState& state, b2Vec2& position)
 {
@@ -129,7 +131,7 @@ bool PushToward(const WorldGeometry& geometry, const ParticleSide& side, b2Vec2 
         else if (!metStatic)
         {
             position += push;
-            return sweep == 0;
+            return true;
         }
         const bool moved = !SameBits(wall.touch.position, position);
         position = wall.touch.position;
@@ -393,7 +395,7 @@ float Collide(const TypeStep& type, const WorldGeometry& geometry, float dt, Sta
                     state.pusherNormal = waypoint.normal;
                     if (!PushToward(geometry, type.side, waypoint.position, pieceFrom, state, position))
                     {
-                        break; // stopped: the rest of the way is not the body's to give
+                        break; // wedged: the rest of the way is not the body's to give
                     }
                     pieceFrom = f;
                 }
