@@ -587,72 +587,72 @@ TEST(MovingBodiesSliding, BallsAroundASpinningWheelNeverPassUnderIt)
                                    WheelCase{0.0f, -60.0f, 2.0f, 0.0f, 0.01f, kBox},
                                    WheelCase{0.0f, 60.0f, 2.0f, 0.0f, 0.01f, kBox}})
         {
+            const auto [slope, spin, drive, gap, radius, ground] = c;
+            SCOPED_TRACE(testing::Message()
+                         << hz << " Hz, slope " << slope << " rad, " << spin << " rad/s, " << drive
+                         << " m/s, gap " << gap << " m, balls " << radius << " m, " << GroundName(ground));
+            const float dt = 1.0f / static_cast<float>(hz);
+            ParticleTypeDef ball = Ball(0.0f, 0.5f);
+            ball.radius = radius;
+            ParticleSystemOptions options;
+            options.checkParticles = true;
+            Pool scene({ball}, ParticleBudget{64, RecyclePolicy::oldest}, options);
+            const b2Rot tilt(slope);
+            const b2Vec2 along = tilt.GetXAxis();
+            const b2Vec2 up = tilt.GetYAxis();
+            CreateGround(*scene.world, ground, 0.5f)
+                .front()
+                ->GetBody()
+                ->SetTransform(b2Vec2(0.0f, 0.0f), slope);
+            b2Body* wheel = scene.CreateCircle((kWheel + gap) * up, kWheel, 0.5f, b2_kinematicBody);
+            // Lives tell the balls apart: the pool keeps their order, but not their slots.
+            for (int i = 0; i < kBalls; ++i)
             {
-                const auto [slope, spin, drive, gap, radius, ground] = c;
-                SCOPED_TRACE(testing::Message() << hz << " Hz, slope " << slope << " rad, " << spin
-                                                << " rad/s, " << drive << " m/s, gap " << gap << " m, balls "
-                                                << radius << " m, " << GroundName(ground));
-                const float dt = 1.0f / static_cast<float>(hz);
-                ParticleTypeDef ball = Ball(0.0f, 0.5f);
-                ball.radius = radius;
-                ParticleSystemOptions options;
-                options.checkParticles = true;
-                Pool scene({ball}, ParticleBudget{64, RecyclePolicy::oldest}, options);
-                const b2Rot tilt(slope);
-                const b2Vec2 along = tilt.GetXAxis();
-                const b2Vec2 up = tilt.GetYAxis();
-                CreateGround(*scene.world, ground, 0.5f)
-                    .front()
-                    ->GetBody()
-                    ->SetTransform(b2Vec2(0.0f, 0.0f), slope);
-                b2Body* wheel = scene.CreateCircle((kWheel + gap) * up, kWheel, 0.5f, b2_kinematicBody);
-                // Lives tell the balls apart: the pool keeps their order, but not their slots.
-                for (int i = 0; i < kBalls; ++i)
-                {
-                    const float x = (i % 2 == 0 ? -1.0f : 1.0f) * (0.3f + 0.06f * static_cast<float>(i / 2));
-                    scene.Add(x * along + ball.radius * up, b2Vec2(0.0f, 0.0f),
-                              1.0f - 0.001f * static_cast<float>(i));
-                }
-                std::vector<b2Vec2> last(kBalls, b2Vec2(0.0f, 0.0f));
-                std::vector<bool> seen(kBalls, false);
-                int underSteps = 0;
-                for (int step = 0; step < hz * 3 / 2; ++step)
-                {
-                    wheel->SetAngularVelocity(step < hz / 4 ? 0.0f : spin);
-                    wheel->SetLinearVelocity(step < hz / 4 ? b2Vec2(0.0f, 0.0f) : drive * along);
-                    scene.world->Step(dt, 8, 3);
-                    scene.system->Step(dt, scene.world->GetGravity());
-                    const ParticleView view = scene.system->View();
-                    const float aged = static_cast<float>(step + 1) * dt / ball.lifetime;
-                    for (std::uint32_t k = 0; k < view.count; ++k)
-                    {
-                        const std::uint32_t slot = view.Slot(k);
-                        const long id = std::lround((1.0f - view.life[slot] - aged) / 0.001f);
-                        if (view.life[slot] <= 0.0f || id < 0 || id >= kBalls)
-                        {
-                            continue;
-                        }
-                        // In the ground's frame, from the wheel's centre.
-                        const b2Vec2 now =
-                            b2Vec2(view.positionX[slot], view.positionY[slot]) - wheel->GetPosition();
-                        const b2Vec2 local(b2Dot(now, along), b2Dot(now, up));
-                        const b2Vec2 before = last[static_cast<std::size_t>(id)];
-                        // From one side to the other, low under the centre all the way: through the wheel.
-                        underSteps += seen[static_cast<std::size_t>(id)] && before.x * local.x < 0.0f &&
-                                              before.y < -0.2f && local.y < -0.2f
-                                          ? 1
-                                          : 0;
-                        last[static_cast<std::size_t>(id)] = local;
-                        seen[static_cast<std::size_t>(id)] = true;
-                    }
-                }
-                EXPECT_EQ(underSteps, 0);
+                const float x = (i % 2 == 0 ? -1.0f : 1.0f) * (0.3f + 0.06f * static_cast<float>(i / 2));
+                scene.Add(x * along + ball.radius * up, b2Vec2(0.0f, 0.0f),
+                          1.0f - 0.001f * static_cast<float>(i));
+            }
+            std::vector<b2Vec2> last(kBalls, b2Vec2(0.0f, 0.0f));
+            std::vector<bool> seen(kBalls, false);
+            int underSteps = 0;
+            for (int step = 0; step < hz * 3 / 2; ++step)
+            {
+                wheel->SetAngularVelocity(step < hz / 4 ? 0.0f : spin);
+                wheel->SetLinearVelocity(step < hz / 4 ? b2Vec2(0.0f, 0.0f) : drive * along);
+                scene.world->Step(dt, 8, 3);
+                scene.system->Step(dt, scene.world->GetGravity());
                 const ParticleView view = scene.system->View();
+                const float aged = static_cast<float>(step + 1) * dt / ball.lifetime;
                 for (std::uint32_t k = 0; k < view.count; ++k)
                 {
-                    const b2Vec2 at(view.positionX[view.Slot(k)], view.positionY[view.Slot(k)]);
-                    EXPECT_GE(b2Dot(at, up), 0.0f) << "below the ground";
+                    const std::uint32_t slot = view.Slot(k);
+                    const long id = std::lround((1.0f - view.life[slot] - aged) / 0.001f);
+                    if (view.life[slot] <= 0.0f || id < 0 || id >= kBalls)
+                    {
+                        continue;
+                    }
+                    // In the ground's frame, from the wheel's centre.
+                    const b2Vec2 now =
+                        b2Vec2(view.positionX[slot], view.positionY[slot]) - wheel->GetPosition();
+                    const b2Vec2 local(b2Dot(now, along), b2Dot(now, up));
+                    const b2Vec2 before = last[static_cast<std::size_t>(id)];
+                    // From one side to the other, low under the centre all the way: through the wheel.
+                    underSteps += seen[static_cast<std::size_t>(id)] && before.x * local.x < 0.0f &&
+                                          before.y < -0.2f && local.y < -0.2f
+                                      ? 1
+                                      : 0;
+                    last[static_cast<std::size_t>(id)] = local;
+                    seen[static_cast<std::size_t>(id)] = true;
                 }
+            }
+            EXPECT_EQ(underSteps, 0);
+            EXPECT_EQ(scene.system->Counters().stepsInside, 0u);
+            EXPECT_EQ(scene.system->Counters().crossings, 0u);
+            const ParticleView view = scene.system->View();
+            for (std::uint32_t k = 0; k < view.count; ++k)
+            {
+                const b2Vec2 at(view.positionX[view.Slot(k)], view.positionY[view.Slot(k)]);
+                EXPECT_GE(b2Dot(at, up), 0.0f) << "below the ground";
             }
         }
     }
