@@ -67,6 +67,16 @@ std::string CaseName(const ::testing::TestParamInfo<Case>& info)
            "Hz";
 }
 
+// A pool of 64 balls of `radius` (no bounce, friction 0.5) with the particle check on.
+Pool CheckedBalls(float radius)
+{
+    ParticleTypeDef ball = Ball(0.0f, 0.5f);
+    ball.radius = radius;
+    ParticleSystemOptions options;
+    options.checkParticles = true;
+    return Pool({ball}, ParticleBudget{64, RecyclePolicy::oldest}, options);
+}
+
 class MovingBodies : public ::testing::TestWithParam<Case>
 {
 };
@@ -592,11 +602,8 @@ TEST(MovingBodiesSliding, BallsAroundASpinningWheelNeverPassUnderIt)
                          << hz << " Hz, slope " << slope << " rad, " << spin << " rad/s, " << drive
                          << " m/s, gap " << gap << " m, balls " << radius << " m, " << GroundName(ground));
             const float dt = 1.0f / static_cast<float>(hz);
-            ParticleTypeDef ball = Ball(0.0f, 0.5f);
-            ball.radius = radius;
-            ParticleSystemOptions options;
-            options.checkParticles = true;
-            Pool scene({ball}, ParticleBudget{64, RecyclePolicy::oldest}, options);
+            Pool scene = CheckedBalls(radius);
+            const ParticleTypeDef& ball = scene.types[0];
             const b2Rot tilt(slope);
             const b2Vec2 along = tilt.GetXAxis();
             const b2Vec2 up = tilt.GetYAxis();
@@ -672,11 +679,8 @@ TEST(MovingBodiesSliding, BallsAheadOfABackspinningWheelAreNotCrushed)
     {
         SCOPED_TRACE(testing::Message() << hz << " Hz");
         const float dt = 1.0f / static_cast<float>(hz);
-        ParticleTypeDef ball = Ball(0.0f, 0.5f);
-        ball.radius = 0.05f;
-        ParticleSystemOptions options;
-        options.checkParticles = true;
-        Pool scene({ball}, ParticleBudget{64, RecyclePolicy::oldest}, options);
+        Pool scene = CheckedBalls(0.05f);
+        const float radius = scene.types[0].radius;
         const b2Rot tilt(kSlope);
         const b2Vec2 along = tilt.GetXAxis();
         const b2Vec2 up = tilt.GetYAxis();
@@ -692,7 +696,7 @@ TEST(MovingBodiesSliding, BallsAheadOfABackspinningWheelAreNotCrushed)
         for (int i = 0; i < 40; ++i)
         {
             const float x = (i % 2 == 0 ? -1.0f : 1.0f) * (0.3f + 0.06f * static_cast<float>(i / 2));
-            scene.Add(x * along + ball.radius * up);
+            scene.Add(x * along + radius * up);
         }
         for (int step = 0; step < hz; ++step)
         {
