@@ -73,7 +73,7 @@ b2Transform WorldGeometry::MovingBody::At(float f) const
     }
     b2Transform xf;
     xf.q.Set(angleBefore + f * turn);
-    xf.p = centerBefore + f * (center - centerBefore) - b2Mul(xf.q, localCenter);
+    xf.p = CenterAt(f) - b2Mul(xf.q, localCenter);
     return xf;
 }
 
